@@ -1,0 +1,25 @@
+#pragma once
+// Frame files through OpenImageIO, written atomically (temporary file in the same folder, then
+// rename): a killed render never leaves a truncated frame.
+#include <map>
+#include <string>
+
+#include "render/image.h"
+
+namespace sdfreel {
+
+// EXR: half-float RGBA, scene-linear, with string metadata attributes (key -> value, stored as
+// "sdfreel:<key>").
+void write_exr_atomic(const std::string& path, const ImageRGBA& linear,
+                      const std::map<std::string, std::string>& metadata);
+// PNG: 16-bit RGB display values.
+void write_png16_atomic(const std::string& path, const ImageRGB16& display);
+
+// Read back (for --resume, encode, verify). Throw std::runtime_error on failure.
+ImageRGB16 read_png16(const std::string& path);
+ImageRGBA read_exr(const std::string& path);  // half values widened to float
+
+// Writes a small file atomically (manifest, framemd5).
+void write_text_atomic(const std::string& path, const std::string& contents);
+
+}  // namespace sdfreel

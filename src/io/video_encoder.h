@@ -1,0 +1,34 @@
+#pragma once
+// In-process video encoding with libav. Frames stream in as they finish; memory stays flat.
+#include <memory>
+#include <string>
+
+#include "render/image.h"
+#include "timeline/timeline.h"
+
+namespace sdfreel {
+
+struct VideoSettings {
+  std::string path;        // .mp4 (h264), .mkv (ffv1), .mov (prores); the container follows the path
+  std::string codec;       // h264 | ffv1 | prores
+  int width = 0, height = 0;
+  Rational fps;
+  int crf = 18;            // h264 only
+};
+
+class VideoEncoder {
+ public:
+  // Opens the output (written to a temporary name, renamed on finish()). Throws std::runtime_error.
+  explicit VideoEncoder(const VideoSettings& s);
+  ~VideoEncoder();  // without finish(): removes the temporary file
+  void add_frame(const ImageRGB16& display);
+  void finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+bool is_known_codec(const std::string& codec);
+
+}  // namespace sdfreel

@@ -1,0 +1,33 @@
+#pragma once
+// Everything one frame depends on. A frame is a pure function of this struct (and the build).
+#include <cstdint>
+#include <vector>
+#include <glm/glm.hpp>
+
+#include "render/camera.h"
+#include "render/params.h"
+#include "render/quality.h"
+
+namespace sdfreel {
+
+struct FrameContext {
+  int frame_index = 0;
+  double video_time = 0.0;   // t_i = i / fps, seconds
+  double scene_time = 0.0;   // TIME, from the [time] curve; double so that 1e6 s keeps precision
+  int width = 64, height = 36;
+  int samples = 1;
+  uint64_t seed = 1;
+  Quality quality = Quality::Final;
+  MarchSettings march{};
+  CameraPose pose;
+  CameraBasis camera{};
+  ParamValues params;
+  // Sub-pixel sample offsets in [0,1)^2, `samples` of them, identical for every pixel: both
+  // backends read this list, so they sample the same positions.
+  std::vector<glm::vec2> sample_offsets;
+};
+
+// Fills march, camera and sample_offsets from quality, pose and samples.
+void finish_frame_context(FrameContext& ctx);
+
+}  // namespace sdfreel

@@ -1,0 +1,96 @@
+#pragma once
+// The parsed, validated timeline (spec/timeline.md). Parsing and validation live in parse.cpp;
+// errors are InputError with file:line:column.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/quality.h"
+#include "timeline/curve.h"
+
+namespace sdfreel {
+
+// Bad input: printed as "FILE:LINE:COLUMN: error: WHAT", exit status 2.
+struct InputError : std::runtime_error {
+  std::string file;
+  int line = 0, column = 0;  // 0 when unknown
+  InputError(std::string file, int line, int column, const std::string& what);
+  std::string formatted() const;  // FILE:LINE:COLUMN: error: WHAT (omits 0 line/column)
+};
+
+struct Rational {
+  int64_t num = 30, den = 1;
+  double value() const { return double(num) / double(den); }
+};
+
+struct CameraKey {
+  double t = 0.0;
+  CameraPose pose;
+};
+
+struct CameraPath {
+  Interp interp = Interp::CatmullRom;
+  bool constant_speed = false;        // speed = "constant": arc-length re-parameterisation
+  std::vector<CameraKey> keys;        // empty: the scene's default camera
+  CameraPose sample(double t, const CameraPose& fallback) const;
+};
+
+struct ParamTrack {
+  std::string name;
+  Curve curve;  // a constant is a one-key curve
+};
+
+struct Timeline {
+  std::string path;     // as given on the command line
+  std::string sha256;   // of the file's bytes, lowercase hex
+
+  // [video]
+  std::string scene;
+  Rational fps;
+  double duration = 10.0;
+  int width = 1280, height = 720;
+  int samples = 4;
+  Quality quality = Quality::Final;
+  uint64_t seed = 1;
+
+  // [output]
+  std::string out_dir;                  // default: output/<timeline file stem>
+  bool write_exr = true, write_png = true;
+  std::string video;                    // "" = no video
+  std::string codec = "h264";           // h264 | ffv1 | prores
+  int crf = 18;
+
+  // [color]
+  std::string color_config = "builtin";
+  std::string display = "sRGB";
+  std::string view = "ACES 1.0 - SDR Video";
+
+  std::optional<Curve> time;            // TIME(t); empty = identity
+  CameraPath camera;
+  std::vector<ParamTrack> params;
+
+  int frame_count() const;              // round(duration * fps)
+  double video_time(int frame) const;   // frame / fps
+  double scene_time(int frame) const;   // TIME at video_time(frame)
+};
+
+// Hooks the parser needs from the rest of the program, so this library does not depend on OCIO.
+struct ColorChecker {
+  // Returns an error message, or "" when config/display/view exist.
+  virtual std::string check(const std::string& config, const std::string& display,
+                            const std::string& view) const = 0;
+  virtual ~ColorChecker() = default;
+};
+
+// Reads, parses and validates a timeline file. Throws InputError on any bad input (spec's list).
+Timeline load_timeline(const std::string& path, const ColorChecker* color);
+
+// Validates a timeline after command-line overrides (resolution, samples, codec size rules).
+// Throws InputError with the timeline path (line/column 0).
+void validate_overrides(const Timeline& tl);
+
+}  // namespace sdfreel
