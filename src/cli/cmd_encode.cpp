@@ -1,0 +1,79 @@
+// `sdfreel encode DIR -o VIDEO`: encode frames already on disk (e.g. rendered in shards), each
+// checked against DIR's manifest first.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "cli/commands_impl.h"
+#include "cli/output_folder.h"
+#include "io/video_encoder.h"
+
+namespace sdfreel {
+
+namespace {
+
+struct EncodeOptions {
+  std::string dir, output, codec, fps;
+  int crf = 18;
+};
+
+Rational parse_fps(const std::string& s) {
+  Rational r;
+  long long n = 0, d = 1;
+  char slash = 0, extra = 0;
+  const int got = std::sscanf(s.c_str(), "%lld%c%lld%c", &n, &slash, &d, &extra);
+  if (!((got == 1) || (got == 3 && slash == '/')) || n <= 0 || d <= 0)
+    throw UsageError("--fps '" + s + "': expected a positive integer or N/D");
+  r.num = n;
+  r.den = got == 3 ? d : 1;
+  return r;
+}
+
+int run_encode(const EncodeOptions& o) {
+  const auto manifest = read_manifest(o.dir + "/manifest.json");
+  if (!manifest) throw UsageError("no manifest.json in " + o.dir);
+  const ManifestHeader& h = manifest->header;
+  const std::string codec = o.codec.empty() ? h.codec : o.codec;
+  if (!is_known_codec(codec)) throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
+  if (codec == "h264" && (h.width % 2 || h.height % 2))
+    throw UsageError("h264 (yuv420p) needs an even width and height; the frames are " +
+                     std::to_string(h.width) + "x" + std::to_string(h.height));
+  Rational fps{h.fps_num, h.fps_den};
+  if (!o.fps.empty()) fps = parse_fps(o.fps);
+  // Every frame of the timeline must be there: a video with a hole is not the timeline's video.
+  for (int i = 0; i < h.frame_count; ++i)
+    if (!manifest->frames.count(i)) {
+      std::fprintf(stderr, "sdfreel: error: frame %d of %d is not in %s/manifest.json\n", i,
+                   h.frame_count, o.dir.c_str());
+      return 1;
+    }
+  DisplayTransform display(h.color_config, h.display, h.view);
+  VideoEncoder encoder(VideoSettings{o.output, codec, h.width, h.height, fps, o.crf});
+  for (int i = 0; i < h.frame_count; ++i) {
+    std::string why;
+    auto shown = load_checked_frame(o.dir, h, manifest->frames.at(i), display, &why);
+    if (!shown) {
+      std::fprintf(stderr, "sdfreel: error: frame %d: %s\n", i, why.c_str());
+      return 1;
+    }
+    encoder.add_frame(*shown);
+  }
+  encoder.finish();
+  std::fprintf(stderr, "wrote %s (%d frames, %s)\n", o.output.c_str(), h.frame_count,
+               codec.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void add_encode_command(CLI::App& app, int& status) {
+  auto o = std::make_shared<EncodeOptions>();
+  CLI::App* cmd = app.add_subcommand("encode", "encode the frames of a render folder into a video");
+  cmd->add_option("DIR", o->dir, "render output folder (with manifest.json)")->required();
+  cmd->add_option("-o,--output", o->output, "video file to write")->required();
+  cmd->add_option("--codec", o->codec, "h264 | ffv1 | prores (default: the timeline's)");
+  cmd->add_option("--fps", o->fps, "frame rate, integer or N/D (default: the timeline's)");
+  cmd->add_option("--crf", o->crf, "h264 quality, 0..51")->check(CLI::Range(0, 51));
+  cmd->callback([o, &status] { status = run_encode(*o); });
+}
+
+}  // namespace sdfreel

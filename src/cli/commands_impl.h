@@ -1,0 +1,20 @@
+#pragma once
+// One add_*_command per command file; each sets `status` when its command runs.
+#include "cli/errors.h"
+#include "cli/frame_pipeline.h"
+#include "cli/render_options.h"
+
+namespace CLI {
+class App;
+}
+
+namespace sdfreel {
+
+void add_render_command(CLI::App& app, int& status);
+void add_still_command(CLI::App& app, int& status);
+void add_verify_command(CLI::App& app, int& status);
+void add_encode_command(CLI::App& app, int& status);
+void add_scenes_command(CLI::App& app, int& status);
+void add_bench_command(CLI::App& app, int& status);
+
+}  // namespace sdfreel

@@ -1,0 +1,83 @@
+#include "cli/output_folder.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "io/frame_files.h"
+#include "io/hashing.h"
+#include "io/versions.h"
+
+namespace sdfreel {
+
+std::string frame_path(const std::string& dir, int index, const std::string& ext) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%05d.", index);  // more digits only past 99999
+  return dir + "/frames/" + name + ext;
+}
+
+ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
+  ManifestHeader h;
+  h.timeline_sha256 = tl.sha256;
+  h.timeline_path = tl.path;
+  h.scene = tl.scene;
+  h.backend = backend.name();
+  h.versions = io_library_versions();
+  for (const auto& [k, v] : backend.versions()) h.versions[backend.name() + "." + k] = v;
+  h.versions["sdfreel"] = SDFREEL_VERSION;
+  h.width = tl.width;
+  h.height = tl.height;
+  h.fps_num = tl.fps.num;
+  h.fps_den = tl.fps.den;
+  h.frame_count = tl.frame_count();
+  h.samples = tl.samples;
+  h.quality = quality_name(tl.quality);
+  h.color_config = tl.color_config;
+  h.display = tl.display;
+  h.view = tl.view;
+  h.codec = tl.codec;
+  h.video = tl.video;
+  if (tl.write_exr) h.frame_files.push_back("exr");
+  if (tl.write_png) h.frame_files.push_back("png");
+  return h;
+}
+
+std::optional<ImageRGB16> load_checked_frame(const std::string& dir, const ManifestHeader& header,
+                                             const ManifestFrame& entry,
+                                             const DisplayTransform& display, std::string* why) {
+  auto has = [&](const char* ext) {
+    return std::find(header.frame_files.begin(), header.frame_files.end(), ext) !=
+           header.frame_files.end();
+  };
+  auto fail = [&](const std::string& msg) -> std::optional<ImageRGB16> {
+    if (why) *why = msg;
+    return std::nullopt;
+  };
+  try {
+    std::optional<ImageRGB16> shown;
+    if (has("exr")) {
+      const std::string p = frame_path(dir, entry.index, "exr");
+      if (!std::filesystem::exists(p)) return fail(p + " is missing");
+      ImageRGBA linear = read_exr(p);
+      if (linear_half_hash(linear) != entry.linear_hash) return fail(p + " differs from the manifest");
+      if (!has("png")) {
+        shown = display.apply(linear);
+        if (md5_rgb48le(*shown) != entry.display_md5)
+          return fail(p + " gives display pixels that differ from the manifest");
+      }
+    }
+    if (has("png")) {
+      const std::string p = frame_path(dir, entry.index, "png");
+      if (!std::filesystem::exists(p)) return fail(p + " is missing");
+      ImageRGB16 img = read_png16(p);
+      if (md5_rgb48le(img) != entry.display_md5) return fail(p + " differs from the manifest");
+      shown = std::move(img);
+    }
+    if (!shown) return fail("the manifest lists no frame files");
+    return shown;
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+}
+
+}  // namespace sdfreel

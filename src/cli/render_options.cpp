@@ -1,0 +1,82 @@
+#include "cli/render_options.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "backends/cpu/cpu_backend.h"
+#include "cli/errors.h"
+#include "cli/frame_range.h"
+#include "io/color.h"
+
+namespace sdfreel {
+
+namespace {
+
+struct OcioChecker : ColorChecker {
+  std::string check(const std::string& config, const std::string& display,
+                    const std::string& view) const override {
+    try {
+      DisplayTransform t(config, display, view);
+      return "";
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  }
+};
+
+}  // namespace
+
+void add_render_options(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_option("TIMELINE", o.timeline_path, "timeline file (TOML)")->required();
+  cmd->add_option("--backend", o.backend, "cpu | osmesa")->check(CLI::IsMember({"cpu", "osmesa"}));
+  cmd->add_option("--frames", o.frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
+  cmd->add_option("--shard", o.shard, "I/N: the I-th (0-based) of N contiguous parts of the frames");
+  cmd->add_option("--threads", o.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--resolution", o.resolution, "WxH, overrides the timeline");
+  cmd->add_option("--samples", o.samples, "samples per pixel, 1..1024")->check(CLI::Range(1, 1024));
+  cmd->add_option("--quality", o.quality, "draft | final | reference")
+      ->check(CLI::IsMember({"draft", "final", "reference"}));
+  cmd->add_option("--out", o.out, "output folder, overrides [output] dir");
+  cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
+  cmd->add_flag("--resume", o.resume,
+                "keep frames on disk whose hashes match the manifest, render the rest");
+}
+
+Timeline load_with_overrides(const RenderOptions& o) {
+  OcioChecker checker;
+  Timeline tl = load_timeline(o.timeline_path, &checker);
+  if (!o.resolution.empty()) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(o.resolution.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x')
+      throw UsageError("--resolution '" + o.resolution + "': expected WxH, e.g. 64x36");
+    tl.width = w;
+    tl.height = h;
+  }
+  if (o.samples) tl.samples = o.samples;
+  if (!o.quality.empty()) tl.quality = *parse_quality(o.quality);
+  if (!o.out.empty()) tl.out_dir = o.out;
+  if (o.no_video) tl.video.clear();
+  validate_overrides(tl);
+  return tl;
+}
+
+std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
+  std::vector<int> frames;
+  if (o.frames.empty()) {
+    for (int i = 0; i < tl.frame_count(); ++i) frames.push_back(i);
+  } else {
+    frames = parse_frame_list(o.frames, tl.frame_count());
+  }
+  if (!o.shard.empty()) frames = shard_of(frames, o.shard);
+  return frames;
+}
+
+std::unique_ptr<Backend> make_backend(const std::string& name, int threads) {
+  if (name == "cpu") return std::make_unique<CpuBackend>(threads);
+  if (name == "osmesa") throw RenderError("the osmesa backend is not built into this sdfreel");
+  throw UsageError("unknown backend '" + name + "' (cpu | osmesa)");
+}
+
+}  // namespace sdfreel

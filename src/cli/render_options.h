@@ -1,0 +1,36 @@
+#pragma once
+// Options shared by `render` and `verify`, which override the timeline, and the job they define.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/backend.h"
+#include "timeline/timeline.h"
+
+namespace CLI {
+class App;
+}
+
+namespace sdfreel {
+
+struct RenderOptions {
+  std::string timeline_path;
+  std::string backend = "cpu";
+  std::string frames, shard, resolution, quality, out;
+  int threads = 0;
+  int samples = 0;
+  bool no_video = false;
+  bool resume = false;
+};
+
+void add_render_options(CLI::App* cmd, RenderOptions& o);
+
+// Loads and validates the timeline, then applies the overrides (re-validated). Throws InputError
+// or UsageError: nothing has been written yet.
+Timeline load_with_overrides(const RenderOptions& o);
+// The frames to render: --frames and --shard applied to the timeline's frame range.
+std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
+// A backend by name; UsageError for unknown names, RenderError when it cannot start.
+std::unique_ptr<Backend> make_backend(const std::string& name, int threads);
+
+}  // namespace sdfreel

@@ -1,0 +1,173 @@
+#include "io/manifest.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/frame_files.h"
+
+namespace sdfreel {
+
+using nlohmann::json;
+
+bool ManifestHeader::same_render_as(const ManifestHeader& o) const {
+  return timeline_sha256 == o.timeline_sha256 && scene == o.scene && backend == o.backend &&
+         versions == o.versions && width == o.width && height == o.height &&
+         fps_num == o.fps_num && fps_den == o.fps_den && frame_count == o.frame_count &&
+         samples == o.samples && quality == o.quality && color_config == o.color_config &&
+         display == o.display && view == o.view;
+}
+
+std::string manifest_to_json(const Manifest& m) {
+  const ManifestHeader& h = m.header;
+  json j;
+  j["format"] = "sdfreel-manifest-1";
+  j["timeline"] = {{"path", h.timeline_path}, {"sha256", h.timeline_sha256}};
+  j["scene"] = h.scene;
+  j["backend"] = h.backend;
+  j["versions"] = h.versions;
+  j["resolution"] = {h.width, h.height};
+  j["fps"] = std::to_string(h.fps_num) + "/" + std::to_string(h.fps_den);
+  j["frame_count"] = h.frame_count;
+  j["samples"] = h.samples;
+  j["quality"] = h.quality;
+  j["color"] = {{"config", h.color_config}, {"display", h.display}, {"view", h.view}};
+  j["codec"] = h.codec;
+  j["video"] = h.video;
+  j["frame_files"] = h.frame_files;
+  if (!m.frames.empty())
+    j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
+  json frames = json::array();
+  for (const auto& [i, f] : m.frames)
+    frames.push_back({{"index", f.index},
+                      {"video_time", f.video_time},
+                      {"scene_time", f.scene_time},
+                      {"linear_md5", f.linear_hash},
+                      {"display_md5", f.display_md5},
+                      {"render_seconds", f.render_seconds},
+                      {"sdf_evals_per_pixel", f.sdf_evals_per_pixel}});
+  j["frames"] = frames;
+  return j.dump(2) + "\n";
+}
+
+Manifest manifest_from_json(const std::string& text) {
+  Manifest m;
+  try {
+    const json j = json::parse(text);
+    ManifestHeader& h = m.header;
+    h.timeline_path = j.at("timeline").at("path");
+    h.timeline_sha256 = j.at("timeline").at("sha256");
+    h.scene = j.at("scene");
+    h.backend = j.at("backend");
+    h.versions = j.at("versions").get<std::map<std::string, std::string>>();
+    h.width = j.at("resolution").at(0);
+    h.height = j.at("resolution").at(1);
+    const std::string fps = j.at("fps");
+    if (std::sscanf(fps.c_str(), "%ld/%ld", &h.fps_num, &h.fps_den) != 2)
+      throw std::runtime_error("bad fps '" + fps + "'");
+    h.frame_count = j.at("frame_count");
+    h.samples = j.at("samples");
+    h.quality = j.at("quality");
+    h.color_config = j.at("color").at("config");
+    h.display = j.at("color").at("display");
+    h.view = j.at("color").at("view");
+    h.codec = j.value("codec", "h264");
+    h.video = j.value("video", "");
+    h.frame_files = j.at("frame_files").get<std::vector<std::string>>();
+    for (const json& f : j.at("frames")) {
+      ManifestFrame fr;
+      fr.index = f.at("index");
+      fr.video_time = f.at("video_time");
+      fr.scene_time = f.at("scene_time");
+      fr.linear_hash = f.at("linear_md5");
+      fr.display_md5 = f.at("display_md5");
+      fr.render_seconds = f.at("render_seconds");
+      fr.sdf_evals_per_pixel = f.value("sdf_evals_per_pixel", 0.0);
+      m.frames[fr.index] = fr;
+    }
+  } catch (const json::exception& e) {
+    throw std::runtime_error(std::string("malformed manifest: ") + e.what());
+  }
+  return m;
+}
+
+std::optional<Manifest> read_manifest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return manifest_from_json(ss.str());
+}
+
+// FFmpeg's framemd5 muxer output, data lines "%d, %10lld, %10lld, %8lld, %8d, %s".
+std::string framemd5_text(const Manifest& m) {
+  const ManifestHeader& h = m.header;
+  std::string out =
+      "#format: frame checksums\n#version: 2\n#hash: MD5\n#tb 0: " + std::to_string(h.fps_den) +
+      "/" + std::to_string(h.fps_num) +
+      "\n#media_type 0: video\n#codec_id 0: rawvideo\n#dimensions 0: " + std::to_string(h.width) +
+      "x" + std::to_string(h.height) + "\n#sar 0: 1/1\n#stream#, dts,        pts, duration,     size, hash\n";
+  const long long size = 6LL * h.width * h.height;
+  char line[256];
+  for (const auto& [i, f] : m.frames) {
+    std::snprintf(line, sizeof line, "%d, %10lld, %10lld, %8lld, %8lld, %s\n", 0, (long long)i,
+                  (long long)i, 1LL, size, f.display_md5.c_str());
+    out += line;
+  }
+  return out;
+}
+
+namespace {
+
+// flock() on a side file: released when the descriptor closes, even if the process is killed.
+class DirLock {
+ public:
+  explicit DirLock(const std::string& dir) {
+    fd_ = ::open((dir + "/.manifest.lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open lock file in " + dir);
+    ::flock(fd_, LOCK_EX);
+  }
+  ~DirLock() { ::close(fd_); }
+
+ private:
+  int fd_;
+};
+
+Manifest load_compatible(const std::string& dir, const ManifestHeader& header) {
+  std::optional<Manifest> m;
+  try {
+    m = read_manifest(dir + "/manifest.json");
+  } catch (const std::exception&) {
+    m.reset();  // a foreign or damaged manifest is replaced, never trusted
+  }
+  if (!m || !m->header.same_render_as(header)) return Manifest{header, {}};
+  m->header = header;
+  return *m;
+}
+
+void write_both(const std::string& dir, const Manifest& m) {
+  write_text_atomic(dir + "/manifest.json", manifest_to_json(m));
+  write_text_atomic(dir + "/frames.framemd5", framemd5_text(m));
+}
+
+}  // namespace
+
+void record_frame(const std::string& dir, const ManifestHeader& header, const ManifestFrame& frame) {
+  DirLock lock(dir);
+  Manifest m = load_compatible(dir, header);
+  m.frames[frame.index] = frame;
+  write_both(dir, m);
+}
+
+void init_manifest(const std::string& dir, const ManifestHeader& header) {
+  DirLock lock(dir);
+  write_both(dir, load_compatible(dir, header));
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,57 @@
+#pragma once
+// manifest.json (spec/cli.md): what was rendered, with which settings and libraries, and per-frame
+// hashes and times. Also writes frames.framemd5 from it. Both are rewritten atomically after every
+// frame, under a file lock, so concurrent shards in one folder merge instead of clobbering.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfreel {
+
+struct ManifestFrame {
+  int index = 0;
+  double video_time = 0.0;
+  double scene_time = 0.0;
+  std::string linear_hash;   // MD5 of half RGBA (what the EXR stores)
+  std::string display_md5;   // MD5 of rgb48le display pixels (what framemd5 lists)
+  double render_seconds = 0.0;
+  double sdf_evals_per_pixel = 0.0;
+};
+
+// Everything that must agree for two renders' frames to be interchangeable (resume, shards).
+struct ManifestHeader {
+  std::string timeline_sha256;
+  std::string timeline_path;
+  std::string scene;
+  std::string backend;
+  std::map<std::string, std::string> versions;
+  int width = 0, height = 0;
+  int64_t fps_num = 30, fps_den = 1;
+  int frame_count = 0;          // frames in the whole timeline
+  int samples = 1;
+  std::string quality;
+  std::string color_config, display, view;
+  std::string codec;            // of the timeline, used by `encode` as the default
+  std::string video;            // file name the timeline asks for ("" none)
+  std::vector<std::string> frame_files;  // "exr", "png"
+  bool same_render_as(const ManifestHeader& o) const;  // all fields but timeline_path/versions order
+};
+
+struct Manifest {
+  ManifestHeader header;
+  std::map<int, ManifestFrame> frames;  // by frame index
+};
+
+std::string manifest_to_json(const Manifest& m);
+Manifest manifest_from_json(const std::string& text);   // throws std::runtime_error
+std::optional<Manifest> read_manifest(const std::string& path);  // nullopt if missing
+std::string framemd5_text(const Manifest& m);
+
+// Locks DIR/.manifest.lock, merges `frame` into DIR/manifest.json (starting afresh when the
+// existing manifest belongs to another render), rewrites manifest.json and frames.framemd5.
+void record_frame(const std::string& dir, const ManifestHeader& header, const ManifestFrame& frame);
+// Writes the header with no frames when the folder has no compatible manifest yet.
+void init_manifest(const std::string& dir, const ManifestHeader& header);
+
+}  // namespace sdfreel

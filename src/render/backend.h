@@ -1,0 +1,28 @@
+#pragma once
+// A backend turns (scene, frame context) into the linear image of that frame. Everything after
+// that (display transform, files, hashes, video) is shared and backend-agnostic.
+#include <map>
+#include <memory>
+#include <string>
+
+#include "render/frame_context.h"
+#include "render/image.h"
+
+namespace sdfreel {
+
+struct SceneInfo;
+struct RayStats;
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  // Library versions and renderer strings that shape pixels, for manifest.json.
+  virtual std::map<std::string, std::string> versions() const = 0;
+  // Once per render, before any frame: build the scene (CPU) or compile its shaders (GL).
+  virtual void begin(const SceneInfo& scene) = 0;
+  // The linear RGBA image of one frame. Deterministic: depends on ctx only.
+  virtual ImageRGBA render(const FrameContext& ctx, RayStats& stats) = 0;
+};
+
+}  // namespace sdfreel
