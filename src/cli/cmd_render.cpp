@@ -6,6 +6,7 @@
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
 #include "cli/progress.h"
+#include "io/atomic_file.h"
 #include "io/frame_files.h"
 #include "io/video_encoder.h"
 
@@ -24,6 +25,9 @@ int run_render(const RenderOptions& o) {
   const std::string& dir = tl.out_dir;
 
   fs::create_directories(dir + "/frames");
+  // A killed render may have left a half-written temporary: never a frame, but litter.
+  remove_stale_temp_files(dir + "/frames");
+  remove_stale_temp_files(dir);
   std::optional<Manifest> previous;
   if (o.resume) {
     previous = read_manifest(dir + "/manifest.json");
