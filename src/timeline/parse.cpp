@@ -1,0 +1,98 @@
+// load_timeline: read the file, refuse what the spec calls bad input, fill a Timeline.
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "timeline/rules.h"
+#include "timeline/sections.h"
+#include "timeline/sha256.h"
+#include "timeline/utf8.h"
+
+namespace sdfreel {
+namespace {
+
+constexpr uint64_t kMaxFileBytes = 16u << 20;  // 16 MiB
+
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, 0, "cannot read: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, "cannot open the file");
+  // Read in chunks and stop one byte past the limit: a huge file (or a pipe) is refused without
+  // reading it all.
+  std::string bytes;
+  char chunk[1 << 16];
+  while (bytes.size() <= kMaxFileBytes && in.read(chunk, sizeof chunk).gcount() > 0)
+    bytes.append(chunk, size_t(in.gcount()));
+  if (in.bad()) throw InputError(path, 0, 0, "cannot read the file");
+  if (bytes.size() > kMaxFileBytes)
+    throw InputError(path, 0, 0, "the file is larger than 16 MiB; a timeline is a small text file");
+  return bytes;
+}
+
+const toml::node* find(const toml::table& root, const char* table, const char* key) {
+  const toml::table* t = root.get_as<toml::table>(table);
+  return t ? t->get(key) : nullptr;
+}
+
+// Rules that involve more than one key, checked after every table has been read.
+void check_across_tables(const TomlReader& r, const toml::table& root, const Timeline& tl,
+                         const ColorChecker* color) {
+  // yuv420p needs even sizes, but only when a video is made (or the codec is asked for).
+  const toml::node* codec = find(root, "output", "codec");
+  if (!tl.video.empty() || codec) {
+    if (std::string problem = check_codec_size(tl.codec, tl.width, tl.height); !problem.empty()) {
+      const toml::node* at = find(root, "video", "resolution");
+      r.fail(at ? at->source() : codec ? codec->source() : toml::source_region{}, problem);
+    }
+  }
+  if (color) {
+    if (std::string problem = color->check(tl.color_config, tl.display, tl.view);
+        !problem.empty()) {
+      // The checker's message quotes the names it refused; point at the most specific one
+      // (a bad view's message also names its display, a bad display's names its config).
+      auto quoted = [&](const std::string& v) {
+        return problem.find('"' + v + '"') != std::string::npos ||
+               problem.find('\'' + v + '\'') != std::string::npos;
+      };
+      const char* key = quoted(tl.view) ? "view" : quoted(tl.display) ? "display" : "config";
+      const toml::node* at = find(root, "color", key);
+      const toml::table* section = root.get_as<toml::table>("color");
+      r.fail(at ? at->source() : section ? section->source() : toml::source_region{}, problem);
+    }
+  }
+}
+
+}  // namespace
+
+Timeline load_timeline(const std::string& path, const ColorChecker* color) {
+  const std::string text = read_file(path);
+  if (std::optional<TextPosition> bad = find_invalid_utf8(text))
+    throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
+
+  Timeline tl;
+  tl.path = path;
+  tl.sha256 = sha256_hex(text);
+
+  toml::table root;
+  try {
+    root = toml::parse(std::string_view(text), std::string_view(path));
+  } catch (const toml::parse_error& e) {
+    const toml::source_position where = e.source().begin;
+    throw InputError(path, int(where.line), int(where.column), std::string(e.description()));
+  }
+
+  TomlReader r(path);
+  r.check_keys(root, "", {"video", "output", "color", "time", "camera", "params"});
+  const SceneInfo& scene = parse_video(r, root, tl);
+  parse_output(r, root, tl);
+  parse_color(r, root, tl);
+  parse_time(r, root, tl);
+  parse_camera(r, root, scene, tl);
+  parse_params(r, root, scene, tl);
+  check_across_tables(r, root, tl, color);
+  return tl;
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,17 @@
+#pragma once
+// Range rules that both the parser and validate_overrides (command-line overrides) apply. Each
+// returns "" when the value is fine, otherwise the error message.
+#include <cstdint>
+#include <string>
+
+namespace sdfreel {
+
+constexpr int kMaxImageSize = 16384;
+constexpr int kMaxSamples = 1024;
+
+std::string check_resolution(int64_t width, int64_t height);
+std::string check_samples(int64_t samples);
+// yuv420p (h264) halves the chroma planes: width and height must be even.
+std::string check_codec_size(const std::string& codec, int64_t width, int64_t height);
+
+}  // namespace sdfreel

@@ -1,0 +1,68 @@
+// Timeline's small methods, InputError, and the checks re-run after command-line overrides.
+#include "timeline/timeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "timeline/rules.h"
+
+namespace sdfreel {
+
+InputError::InputError(std::string file_, int line_, int column_, const std::string& what)
+    : std::runtime_error(what), file(std::move(file_)), line(line_), column(column_) {}
+
+std::string InputError::formatted() const {
+  std::string out = file;
+  if (line > 0) {
+    out += ":" + std::to_string(line);
+    if (column > 0) out += ":" + std::to_string(column);
+  }
+  return out + ": error: " + what();
+}
+
+int Timeline::frame_count() const {
+  return std::max(1, int(std::llround(duration * fps.value())));
+}
+
+double Timeline::video_time(int frame) const {
+  // One rounding only: frame * den is an exact integer (the parser bounds num and den).
+  return double(int64_t(frame) * fps.den) / double(fps.num);
+}
+
+double Timeline::scene_time(int frame) const {
+  const double t = video_time(frame);
+  return time ? time->sample(t)[0] : t;
+}
+
+std::string check_resolution(int64_t width, int64_t height) {
+  auto ok = [](int64_t v) { return v >= 1 && v <= kMaxImageSize; };
+  if (ok(width) && ok(height)) return "";
+  return "resolution " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
+         std::to_string(kMaxImageSize);
+}
+
+std::string check_samples(int64_t samples) {
+  if (samples >= 1 && samples <= kMaxSamples) return "";
+  return "samples " + std::to_string(samples) + " is outside 1.." + std::to_string(kMaxSamples);
+}
+
+std::string check_codec_size(const std::string& codec, int64_t width, int64_t height) {
+  if (codec != "h264" || (width % 2 == 0 && height % 2 == 0)) return "";
+  // Round odd sizes up: the result stays within 1..16384 because 16384 is even.
+  auto even = [](int64_t v) { return v % 2 == 0 ? v : v + 1; };
+  return "resolution " + std::to_string(width) + "x" + std::to_string(height) +
+         " has an odd side, but codec h264 (yuv420p) needs an even width and height: use " +
+         std::to_string(even(width)) + "x" + std::to_string(even(height));
+}
+
+void validate_overrides(const Timeline& tl) {
+  // The codec's size rule matters only when a video is written (--no-video clears tl.video).
+  const std::string codec_problem =
+      tl.video.empty() ? "" : check_codec_size(tl.codec, tl.width, tl.height);
+  for (const std::string& problem :
+       {check_resolution(tl.width, tl.height), check_samples(tl.samples), codec_problem}) {
+    if (!problem.empty()) throw InputError(tl.path, 0, 0, problem);
+  }
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,85 @@
+// End-to-end contract for bad input: exit 2, "FILE:LINE:COLUMN: error: WHAT", nothing on disk.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+
+#include "cli/harness.h"
+
+namespace sdfreel::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadCase {
+  const char* name;
+  std::string timeline;
+  const char* message;  // a piece of the expected message
+  const char* args = "";
+};
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  if (at == std::string::npos) throw std::logic_error("fixture lacks '" + from + "'");
+  return s.replace(at, from.size(), to);
+}
+
+std::vector<BadCase> bad_cases() {
+  const std::string good = small_timeline(4);
+  return {
+      {"syntax", good + "\n[broken\n", ""},
+      {"unknown_key", replace(good, "samples = 1", "sample = 1"), "samples"},
+      {"wrong_type", replace(good, "samples = 1", "samples = \"four\""), "samples"},
+      {"nan", replace(good, "duration = ", "duration = nan # "), "duration"},
+      {"fps_zero", replace(good, "fps = 10", "fps = 0"), "fps"},
+      {"duration_negative", replace(good, "duration = ", "duration = -"), "duration"},
+      {"resolution", replace(good, "[64, 36]", "[64, 0]"), "resolution"},
+      {"fov", replace(good, "fov = 40.0", "fov = 180.0"), "fov"},
+      {"position_is_target", replace(good, "position = [0.0, 1.5, -4.0]", "position = [0.0, 0.6, 0.0]"), "target"},
+      {"unknown_scene", replace(good, "sdf_morph", "sdf_morf"), "sdf_morf"},
+      {"unknown_param", replace(good, "morph_period = 2.0", "morph_perod = 2.0"), "morph_period"},
+      {"param_range", replace(good, "morph_period = 2.0", "morph_period = -5.0"), "morph_period"},
+      {"unknown_codec", replace(good, "codec = \"ffv1\"", "codec = \"vp9\""), "vp9"},
+      {"odd_h264", replace(replace(good, "codec = \"ffv1\"", "codec = \"h264\""), "[64, 36]", "[63, 36]"), "64x36"},
+      {"unknown_view", good + "[color]\nview = \"Filmic\"\n", "Filmic"},
+      {"samples", replace(good, "samples = 1", "samples = 2000"), "samples"},
+      {"keys_order", replace(good, "t = 2.0", "t = 0.0"), "strictly increase"},
+      {"override_resolution", good, "", "--resolution 20000x10"},
+  };
+}
+
+TEST(BadInput, ExitsTwoWithLocationAndWritesNothing) {
+  for (const BadCase& c : bad_cases()) {
+    const std::string dir = make_scratch_dir(std::string("bad-") + c.name);
+    write_file(dir + "/t.toml", c.timeline);
+    const RunResult r = sdfreel(std::string("render t.toml ") + c.args, dir);
+    EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
+    EXPECT_TRUE(std::regex_search(r.err, std::regex("^t\\.toml:([0-9]+:[0-9]+:)? error: ")))
+        << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/out")) << c.name << ": output folder was created";
+    // Only the line-less override case may omit line:column.
+    if (std::string(c.args).empty())
+      EXPECT_TRUE(std::regex_search(r.err, std::regex("^t\\.toml:[0-9]+:[0-9]+: error: ")))
+          << c.name << ": " << r.err;
+  }
+}
+
+TEST(BadInput, NonUtf8AndHugeFilesAreRefused) {
+  const std::string dir = make_scratch_dir("bad-bytes");
+  write_file(dir + "/t.toml", small_timeline(2) + "# \xff\xfe\n");
+  EXPECT_EQ(sdfreel("render t.toml", dir).status, 2);
+  write_file(dir + "/big.toml", small_timeline(2) + std::string(17 << 20, '#'));
+  EXPECT_EQ(sdfreel("render big.toml", dir).status, 2);
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST(BadInput, UnknownCommandLineOptionsExitTwo) {
+  EXPECT_EQ(sdfreel("render").status, 2);
+  EXPECT_EQ(sdfreel("render x.toml --bogus").status, 2);
+  EXPECT_EQ(sdfreel("frobnicate").status, 2);
+  EXPECT_EQ(sdfreel("scenes no_such_scene").status, 2);
+}
+
+}  // namespace
+}  // namespace sdfreel::test

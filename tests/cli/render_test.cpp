@@ -1,0 +1,163 @@
+// End-to-end: frames, manifest, framemd5 and video of a small render, and their determinism.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/harness.h"
+
+namespace sdfreel::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Render, WritesFramesManifestFramemd5AndVideo) {
+  const std::string dir = make_scratch_dir("render-basic");
+  write_file(dir + "/t.toml", small_timeline(4));
+  const RunResult r = sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (int i = 0; i < 4; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/out/frames/%05d.", i);
+    EXPECT_TRUE(fs::exists(dir + name + "png")) << name;
+    EXPECT_TRUE(fs::exists(dir + name + "exr")) << name;
+  }
+  EXPECT_TRUE(fs::exists(dir + "/out/small.mkv"));
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  EXPECT_EQ(m["frames"].size(), 4u);
+  EXPECT_EQ(m["backend"], "cpu");
+  EXPECT_EQ(m["resolution"][0], 64);
+  EXPECT_EQ(m["timeline"]["sha256"].get<std::string>().size(), 64u);
+  EXPECT_TRUE(m["versions"].contains("opencolorio"));
+  const auto lines = framemd5_data_lines(read_file(dir + "/out/frames.framemd5"));
+  ASSERT_EQ(lines.size(), 4u);
+  // Non-terminal stderr: one parseable line per frame.
+  EXPECT_NE(r.err.find("frame 4/4 done in "), std::string::npos) << r.err;
+}
+
+TEST(Render, Framemd5MatchesStockFfmpegOnPngsAndOnFfv1Video) {
+  if (!have_tool("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
+  const std::string dir = make_scratch_dir("render-ffmpeg");
+  write_file(dir + "/t.toml", small_timeline(3));
+  ASSERT_EQ(sdfreel("render t.toml", dir).status, 0);
+  const auto ours = framemd5_data_lines(read_file(dir + "/out/frames.framemd5"));
+  const RunResult png = run(
+      "ffmpeg -v error -i out/frames/%05d.png -pix_fmt rgb48le -fflags +bitexact -f framemd5 -",
+      dir);
+  ASSERT_EQ(png.status, 0) << png.err;
+  EXPECT_EQ(framemd5_data_lines(png.out), ours);
+  const RunResult mkv =
+      run("ffmpeg -v error -i out/small.mkv -pix_fmt rgb48le -fflags +bitexact -f framemd5 -", dir);
+  ASSERT_EQ(mkv.status, 0) << mkv.err;
+  EXPECT_EQ(framemd5_data_lines(mkv.out), ours);
+}
+
+TEST(Render, SameHashesForOneTwoAndFourThreads) {
+  std::vector<std::string> results;
+  for (int threads : {1, 2, 4}) {
+    const std::string dir = make_scratch_dir("render-threads-" + std::to_string(threads));
+    write_file(dir + "/t.toml", small_timeline(3));
+    ASSERT_EQ(sdfreel("render t.toml --no-video --threads " + std::to_string(threads), dir).status, 0);
+    results.push_back(read_file(dir + "/out/frames.framemd5"));
+  }
+  EXPECT_EQ(results[0], results[1]);
+  EXPECT_EQ(results[0], results[2]);
+}
+
+TEST(Render, ResumeAfterPartialRenderEqualsFullRender) {
+  const std::string full = make_scratch_dir("render-full");
+  write_file(full + "/t.toml", small_timeline(6));
+  ASSERT_EQ(sdfreel("render t.toml", full).status, 0);
+
+  const std::string part = make_scratch_dir("render-resume");
+  write_file(part + "/t.toml", small_timeline(6));
+  ASSERT_EQ(sdfreel("render t.toml --frames 0-2", part).status, 0);
+  EXPECT_FALSE(fs::exists(part + "/out/small.mkv"));  // partial range: no video
+  // A damaged frame on disk must be rendered again, not kept.
+  write_file(part + "/out/frames/00001.png", "not a png");
+  const RunResult r = sdfreel("render t.toml --resume", part);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("kept"), std::string::npos);
+  EXPECT_EQ(read_file(part + "/out/frames.framemd5"), read_file(full + "/out/frames.framemd5"));
+  EXPECT_EQ(read_file(part + "/out/frames/00001.png"), read_file(full + "/out/frames/00001.png"));
+  EXPECT_EQ(read_file(part + "/out/small.mkv"), read_file(full + "/out/small.mkv"));
+}
+
+TEST(Render, ShardsThenEncodeEqualOneRender) {
+  const std::string full = make_scratch_dir("render-one");
+  write_file(full + "/t.toml", small_timeline(5));
+  ASSERT_EQ(sdfreel("render t.toml", full).status, 0);
+
+  const std::string sharded = make_scratch_dir("render-shards");
+  write_file(sharded + "/t.toml", small_timeline(5));
+  ASSERT_EQ(sdfreel("render t.toml --shard 1/2", sharded).status, 0);
+  // Encoding with a frame missing fails (exit 1) and names it.
+  const RunResult early = sdfreel("encode out -o early.mkv --codec ffv1", sharded);
+  EXPECT_EQ(early.status, 1);
+  EXPECT_NE(early.err.find("frame 0 "), std::string::npos) << early.err;
+  ASSERT_EQ(sdfreel("render t.toml --shard 0/2", sharded).status, 0);
+  EXPECT_EQ(read_file(sharded + "/out/frames.framemd5"), read_file(full + "/out/frames.framemd5"));
+  const RunResult enc = sdfreel("encode out -o joined.mkv --codec ffv1", sharded);
+  ASSERT_EQ(enc.status, 0) << enc.err;
+  EXPECT_EQ(read_file(sharded + "/joined.mkv"), read_file(full + "/out/small.mkv"));
+}
+
+TEST(Render, EncodeRefusesAFrameThatDiffersFromTheManifest) {
+  const std::string dir = make_scratch_dir("render-tamper");
+  write_file(dir + "/t.toml", small_timeline(2));
+  ASSERT_EQ(sdfreel("render t.toml --no-video", dir).status, 0);
+  fs::copy_file(dir + "/out/frames/00000.png", dir + "/out/frames/00001.png",
+                fs::copy_options::overwrite_existing);
+  const RunResult r = sdfreel("encode out -o v.mkv --codec ffv1", dir);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("frame 1"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/v.mkv"));
+}
+
+TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
+  const std::string dir = make_scratch_dir("render-kill");
+  write_file(dir + "/t.toml", small_timeline(40));
+  // Kill the render after a moment, mid-run.
+  run("timeout -s KILL 1.5 '" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video", dir);
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  ASSERT_LT(m["frames"].size(), 40u) << "render finished before the kill: make it longer";
+  // Every listed frame is on disk, complete and matches its hash; the resume finishes the job.
+  const RunResult r = sdfreel("render t.toml --no-video --resume", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  size_t kept = 0;
+  for (size_t pos = 0; (pos = r.err.find("kept", pos)) != std::string::npos; ++pos) ++kept;
+  EXPECT_EQ(kept, m["frames"].size());
+  for (const auto& entry : fs::directory_iterator(dir + "/out/frames")) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.find("tmp"), std::string::npos) << "temporary file left: " << name;
+  }
+}
+
+TEST(Still, WritesOnePngAndOneExr) {
+  const std::string dir = make_scratch_dir("still");
+  write_file(dir + "/t.toml", small_timeline(4));
+  ASSERT_EQ(sdfreel("still t.toml --time 0.25 -o a.png", dir).status, 0);
+  ASSERT_EQ(sdfreel("still t.toml --time 0.25 -o a.exr", dir).status, 0);
+  EXPECT_GT(fs::file_size(dir + "/a.png"), 100u);
+  EXPECT_GT(fs::file_size(dir + "/a.exr"), 100u);
+  EXPECT_EQ(sdfreel("still t.toml --time 0.25 -o a.jpg", dir).status, 2);
+}
+
+TEST(Verify, PassesOnItsOwnRenderAndFailsOnADifferentFrame) {
+  const std::string dir = make_scratch_dir("verify");
+  write_file(dir + "/t.toml", small_timeline(3));
+  ASSERT_EQ(sdfreel("render t.toml --no-video", dir).status, 0);
+  const RunResult ok = sdfreel("verify t.toml --manifest out/manifest.json", dir);
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  // Swap two frames' hashes in the manifest: verify must name frame 0 and write a diff image.
+  auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  std::swap(m["frames"][0]["display_md5"], m["frames"][1]["display_md5"]);
+  write_file(dir + "/out/manifest.json", m.dump(2));
+  const RunResult bad = sdfreel("verify t.toml --manifest out/manifest.json", dir);
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("frame 0 differs"), std::string::npos) << bad.err;
+  EXPECT_TRUE(fs::exists(dir + "/out/verify-00000-diff.png"));
+}
+
+}  // namespace
+}  // namespace sdfreel::test
