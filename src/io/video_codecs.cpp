@@ -1,0 +1,74 @@
+#include "io/video_codecs.h"
+
+#include <stdexcept>
+
+extern "C" {
+#include <libavutil/cpu.h>
+#include <libavutil/opt.h>
+}
+
+namespace sdfreel {
+namespace {
+
+// Threads: a fixed count, never "auto", so the bytes do not depend on the machine's cores. x264's
+// frame threads and FFV1/ProRes slices are deterministic for a given count.
+const VideoCodecSpec kCodecs[] = {
+    {"h264", "libx264", AV_PIX_FMT_YUV420P, true, true, 4},
+    // FFV1 keeps rgb48 losslessly as planar gbrp16le.
+    {"ffv1", "ffv1", AV_PIX_FMT_GBRP16LE, false, false, 4},
+    {"prores", "prores_ks", AV_PIX_FMT_YUV444P10LE, true, false, 4},
+};
+
+void set_private_option(AVCodecContext* ctx, const char* key, const std::string& value) {
+  av_check(av_opt_set(ctx->priv_data, key, value.c_str(), 0),
+           std::string("setting ") + ctx->codec->name + " option " + key + "=" + value);
+}
+
+}  // namespace
+
+const VideoCodecSpec* find_video_codec(const std::string& name) {
+  for (const VideoCodecSpec& c : kCodecs)
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+std::string known_video_codecs() {
+  std::string out;
+  for (const VideoCodecSpec& c : kCodecs) out += (out.empty() ? "" : ", ") + std::string(c.name);
+  return out;
+}
+
+void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int width, int height,
+                           AVRational fps, int crf) {
+  ctx->width = width;
+  ctx->height = height;
+  ctx->sample_aspect_ratio = AVRational{1, 1};
+  ctx->framerate = fps;
+  ctx->time_base = av_inv_q(fps);  // pts = frame index
+  ctx->pix_fmt = spec.pix_fmt;
+  ctx->flags |= AV_CODEC_FLAG_BITEXACT;  // no version strings that change between builds
+  ctx->thread_count = spec.threads;
+
+  // The display pixels are BT.709 primaries; Y'CbCr codecs use the BT.709 matrix in tv range
+  // (what players assume for HD), RGB codecs store full range.
+  ctx->color_primaries = AVCOL_PRI_BT709;
+  ctx->color_trc = AVCOL_TRC_BT709;
+  ctx->colorspace = spec.yuv ? AVCOL_SPC_BT709 : AVCOL_SPC_RGB;
+  ctx->color_range = spec.yuv ? AVCOL_RANGE_MPEG : AVCOL_RANGE_JPEG;
+
+  const std::string name = spec.name;
+  if (name == "h264") {
+    set_private_option(ctx, "preset", "medium");
+    set_private_option(ctx, "crf", std::to_string(crf));
+    // x264 r3095's AVX-512 code reads memory it never wrote (in mbtree): two encodes in one
+    // process then differ with whatever the heap held before. Its AVX2 code gives the same bytes
+    // without that, and every AVX-512 CPU has AVX2.
+    if (av_get_cpu_flags() & AV_CPU_FLAG_AVX512) set_private_option(ctx, "x264-params", "asm=AVX2");
+  } else if (name == "ffv1") {
+    ctx->level = 3;  // FFV1 version 3: slices, CRCs, multithreaded decoding
+  } else if (name == "prores") {
+    set_private_option(ctx, "profile", "4444");
+  }
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,26 @@
+#pragma once
+// What each codec name of the timeline means in libav: encoder, pixel format, colour tags and
+// private options. Kept apart from the encoding loop so the choices can be read in one place.
+#include <string>
+
+#include "io/video_av.h"
+
+namespace sdfreel {
+
+struct VideoCodecSpec {
+  const char* name;       // h264 | ffv1 | prores
+  const char* encoder;    // libav encoder name
+  AVPixelFormat pix_fmt;  // what the encoder is fed
+  bool yuv;               // RGB -> Y'CbCr with the BT.709 matrix, limited (tv) range
+  bool even_size;         // chroma halved in both directions: width and height must be even
+  int threads;            // a fixed count, never "auto": see video_codecs.cpp
+};
+
+const VideoCodecSpec* find_video_codec(const std::string& name);  // nullptr when unknown
+std::string known_video_codecs();                                 // "h264, ffv1, prores"
+
+// Sets size, rates, pixel format, colour tags and the codec's own options before avcodec_open2.
+void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int width, int height,
+                           AVRational fps, int crf);
+
+}  // namespace sdfreel
