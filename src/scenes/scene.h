@@ -21,6 +21,22 @@ struct RayStats {
   void add(const RayStats& o) { sdf_evals += o.sdf_evals; steps += o.steps; capped += o.capped; }
 };
 
+// Per-frame constants a scene hands to its GLSL twin (OSMesa backend): the same numbers that
+// prepare() computed for the C++ path, so both backends start from identical inputs.
+struct ShaderUniform {
+  std::string name;           // GLSL uniform name
+  int components = 1;         // 1..4: float, vec2, vec3, vec4
+  std::vector<float> values;  // components * array length (array when longer)
+};
+
+// A texture a scene generates (blue noise, sky, paper maps) for its GLSL twin. Shaders should
+// read it with texelFetch and filter in code exactly as the C++ path does.
+struct ShaderTexture {
+  std::string name;           // sampler uniform name
+  int width = 0, height = 0, channels = 4;
+  std::vector<float> texels;  // width * height * channels, row-major, row 0 first
+};
+
 struct Ray {
   glm::vec3 origin;
   glm::vec3 dir;        // unit length
@@ -35,6 +51,9 @@ class Scene {
   virtual void prepare(const FrameContext& ctx) = 0;
   // Linear scene-referred radiance (Rec.709 primaries) along one primary ray. Thread-safe (const).
   virtual glm::vec3 radiance(const Ray& ray, RayStats& stats) const = 0;
+  // For the OSMesa backend, after prepare(): the per-frame constants and textures its shader reads.
+  virtual std::vector<ShaderUniform> shader_uniforms() const { return {}; }
+  virtual std::vector<ShaderTexture> shader_textures() const { return {}; }
 };
 
 struct SceneInfo {

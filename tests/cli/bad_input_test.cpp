@@ -59,9 +59,10 @@ TEST(BadInput, ExitsTwoWithLocationAndWritesNothing) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir + "/out")) << c.name << ": output folder was created";
     // Only the line-less override case may omit line:column.
-    if (std::string(c.args).empty())
+    if (std::string(c.args).empty()) {
       EXPECT_TRUE(std::regex_search(r.err, std::regex("^t\\.toml:[0-9]+:[0-9]+: error: ")))
           << c.name << ": " << r.err;
+    }
   }
 }
 

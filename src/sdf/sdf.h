@@ -1,0 +1,166 @@
+#pragma once
+// Signed distance primitives and operators after Inigo Quilez ("distance functions" article), as
+// small pure float functions with GLSL's names and argument order, so that shaders/common can
+// mirror them line for line. Every function is 1-Lipschitz (a bound or exact distance) and finite
+// for finite input: square roots of rounding-negative values and divisions by zero are guarded.
+#include <glm/glm.hpp>
+
+#include "sdf/det_math.h"
+
+namespace sdfreel {
+
+// ---- helpers ----
+
+// Length below which a vector has no usable direction.
+constexpr float SAFE_NORMALIZE_MIN_LENGTH2 = 1e-30f;
+
+// normalize() that never divides by zero: a (near-)zero vector maps to +Y.
+inline glm::vec3 safe_normalize(const glm::vec3& v) {
+  const float len2 = glm::dot(v, v);
+  if (!(len2 > SAFE_NORMALIZE_MIN_LENGTH2)) return glm::vec3(0.0f, 1.0f, 0.0f);
+  return v / dm::sqrt(len2);
+}
+
+inline float dot2(const glm::vec2& v) {
+  return glm::dot(v, v);
+}
+inline float dot2(const glm::vec3& v) {
+  return glm::dot(v, v);
+}
+
+// Rotation about +Y by the angle whose cosine and sine are given (precompute them per frame).
+inline glm::vec3 rotateY(const glm::vec3& p, float c, float s) {
+  return glm::vec3(c * p.x + s * p.z, p.y, c * p.z - s * p.x);
+}
+
+// ---- 3D primitives (centred at the origin) ----
+
+inline float sdSphere(const glm::vec3& p, float r) {
+  return glm::length(p) - r;
+}
+
+// b: half extents.
+inline float sdBox(const glm::vec3& p, const glm::vec3& b) {
+  const glm::vec3 q = glm::abs(p) - b;
+  return glm::length(glm::max(q, 0.0f)) + dm::min(dm::max(q.x, dm::max(q.y, q.z)), 0.0f);
+}
+
+// b: half extents including the rounding; r: corner radius.
+inline float sdRoundBox(const glm::vec3& p, const glm::vec3& b, float r) {
+  const glm::vec3 q = glm::abs(p) - b + r;
+  return glm::length(glm::max(q, 0.0f)) + dm::min(dm::max(q.x, dm::max(q.y, q.z)), 0.0f) - r;
+}
+
+// Ring in the xz plane: t.x major radius, t.y tube radius.
+inline float sdTorus(const glm::vec3& p, const glm::vec2& t) {
+  const glm::vec2 q(glm::length(glm::vec2(p.x, p.z)) - t.x, p.y);
+  return glm::length(q) - t.y;
+}
+
+// Arc of a ring in the xy plane, symmetric about +Y, spanning the angle `an` either side of +Y;
+// sc = (sin an, cos an). ra ring radius, rb tube radius.
+inline float sdCappedTorus(glm::vec3 p, const glm::vec2& sc, float ra, float rb) {
+  p.x = dm::abs(p.x);
+  const glm::vec2 pxy(p.x, p.y);
+  const float k = (sc.y * p.x > sc.x * p.y) ? glm::dot(pxy, sc) : glm::length(pxy);
+  // The radicand is |p - nearest arc point|^2 >= 0 up to rounding.
+  return dm::sqrt(dm::max(glm::dot(p, p) + ra * ra - 2.0f * ra * k, 0.0f)) - rb;
+}
+
+// Vertical cylinder: h half height, r radius.
+inline float sdCappedCylinder(const glm::vec3& p, float h, float r) {
+  const glm::vec2 d = glm::abs(glm::vec2(glm::length(glm::vec2(p.x, p.z)), p.y)) - glm::vec2(r, h);
+  return dm::min(dm::max(d.x, d.y), 0.0f) + glm::length(glm::max(d, 0.0f));
+}
+
+// The lantern rods of seed 000: a capped cylinder moved by `offset` in the xz plane.
+inline float sdCappedCylinderOffset(const glm::vec3& p, float h, float r, const glm::vec2& offset) {
+  return sdCappedCylinder(p - glm::vec3(offset.x, 0.0f, offset.y), h, r);
+}
+
+// Plane through the points with dot(p, n) = -h; n must be unit length.
+inline float sdPlane(const glm::vec3& p, const glm::vec3& n, float h) {
+  return glm::dot(p, n) + h;
+}
+
+// Unsigned distance to the segment ab (a == b is a point).
+inline float sdSegment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
+  const glm::vec3 pa = p - a, ba = b - a;
+  const float bb = glm::dot(ba, ba);
+  const float h = bb > 0.0f ? dm::clamp(glm::dot(pa, ba) / bb, 0.0f, 1.0f) : 0.0f;
+  return glm::length(pa - ba * h);
+}
+
+inline float sdCapsule(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, float r) {
+  return sdSegment(p, a, b) - r;
+}
+
+// ---- 2D primitives ----
+
+inline float sdCircle(const glm::vec2& p, float r) {
+  return glm::length(p) - r;
+}
+
+inline float sdSegment(const glm::vec2& p, const glm::vec2& a, const glm::vec2& b) {
+  const glm::vec2 pa = p - a, ba = b - a;
+  const float bb = glm::dot(ba, ba);
+  const float h = bb > 0.0f ? dm::clamp(glm::dot(pa, ba) / bb, 0.0f, 1.0f) : 0.0f;
+  return glm::length(pa - ba * h);
+}
+
+inline float sdBox2(const glm::vec2& p, const glm::vec2& b) {
+  const glm::vec2 q = glm::abs(p) - b;
+  return glm::length(glm::max(q, 0.0f)) + dm::min(dm::max(q.x, q.y), 0.0f);
+}
+
+// Rounded rectangle: b half extents including the rounding, r corner radius.
+inline float sdRoundRect(const glm::vec2& p, const glm::vec2& b, float r) {
+  return sdBox2(p, b - glm::vec2(r)) - r;
+}
+
+// ---- operators ----
+
+inline float opUnion(float d1, float d2) {
+  return dm::min(d1, d2);
+}
+// d2 with d1 carved out of it (Quilez's argument order).
+inline float opSubtraction(float d1, float d2) {
+  return dm::max(-d1, d2);
+}
+inline float opIntersection(float d1, float d2) {
+  return dm::max(d1, d2);
+}
+
+// Polynomial smooth minimum with blend radius k; k <= 0 is the hard operation (no division by 0).
+inline float opSmoothUnion(float d1, float d2, float k) {
+  if (!(k > 0.0f)) return opUnion(d1, d2);
+  const float h = dm::clamp(0.5f + 0.5f * (d2 - d1) / k, 0.0f, 1.0f);
+  return dm::mix(d2, d1, h) - k * h * (1.0f - h);
+}
+
+inline float opSmoothSubtraction(float d1, float d2, float k) {
+  if (!(k > 0.0f)) return opSubtraction(d1, d2);
+  const float h = dm::clamp(0.5f - 0.5f * (d2 + d1) / k, 0.0f, 1.0f);
+  return dm::mix(d2, -d1, h) + k * h * (1.0f - h);
+}
+
+inline float opSmoothIntersection(float d1, float d2, float k) {
+  if (!(k > 0.0f)) return opIntersection(d1, d2);
+  const float h = dm::clamp(0.5f - 0.5f * (d2 - d1) / k, 0.0f, 1.0f);
+  return dm::mix(d2, d1, h) + k * h * (1.0f - h);
+}
+
+// Shell of thickness 2t around the surface.
+inline float opOnion(float d, float t) {
+  return dm::abs(d) - t;
+}
+// Rounds a shape by growing it by r (shrink the primitive by r first to keep its size).
+inline float opRound(float d, float r) {
+  return d - r;
+}
+// Mirror into the +x +z quadrant (four copies for the price of one).
+inline glm::vec3 opSymXZ(const glm::vec3& p) {
+  return glm::vec3(dm::abs(p.x), p.y, dm::abs(p.z));
+}
+
+}  // namespace sdfreel
