@@ -77,17 +77,19 @@ int run_bench(const BenchOptions& o) {
             std::make_unique<FramePipeline>(*timelines.back(), make_backend(backend, o.threads)));
         FramePipeline* pipe = pipelines.back().get();
         const std::string name = scene + "/" + backend + "/" + quality_name(q);
-        benchmark::RegisterBenchmark(name.c_str(), [pipe, frames](benchmark::State& state) {
-          size_t k = 0;
-          double evals = 0.0;
-          for (auto _ : state) {
-            RenderedFrame f = pipe->render(frames[k++ % frames.size()]);
-            evals += double(f.stats.sdf_evals);
-            benchmark::DoNotOptimize(f.display.pixels.data());
-          }
-          const double pixels = double(pipe->timeline().width) * pipe->timeline().height;
-          state.counters["sdf_evals_per_pixel"] = evals / (pixels * double(state.iterations()));
-        })
+        benchmark::RegisterBenchmark(
+            name.c_str(),
+            [pipe, frames](benchmark::State& state) {
+              size_t k = 0;
+              double evals = 0.0;
+              for (auto _ : state) {
+                RenderedFrame f = pipe->render(frames[k++ % frames.size()]);
+                evals += double(f.stats.sdf_evals);
+                benchmark::DoNotOptimize(f.display.pixels.data());
+              }
+              const double pixels = double(pipe->timeline().width) * pipe->timeline().height;
+              state.counters["sdf_evals_per_pixel"] = evals / (pixels * double(state.iterations()));
+            })
             ->Unit(benchmark::kMillisecond)
             ->Iterations(int64_t(frames.size()))
             ->Repetitions(o.repetitions)

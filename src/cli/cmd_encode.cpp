@@ -33,7 +33,8 @@ int run_encode(const EncodeOptions& o) {
   if (!manifest) throw UsageError("no manifest.json in " + o.dir);
   const ManifestHeader& h = manifest->header;
   const std::string codec = o.codec.empty() ? h.codec : o.codec;
-  if (!is_known_codec(codec)) throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
+  if (!is_known_codec(codec))
+    throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
   if (codec == "h264" && (h.width % 2 || h.height % 2))
     throw UsageError("h264 (yuv420p) needs an even width and height; the frames are " +
                      std::to_string(h.width) + "x" + std::to_string(h.height));

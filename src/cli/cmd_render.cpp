@@ -67,8 +67,8 @@ int run_render(const RenderOptions& o) {
     if (tl.write_png) write_png16_atomic(frame_path(dir, i, "png"), f.display);
     const double pixels = double(tl.width) * tl.height;
     record_frame(dir, header,
-                 ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash,
-                               f.display_md5, f.seconds, double(f.stats.sdf_evals) / pixels});
+                 ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash, f.display_md5,
+                               f.seconds, double(f.stats.sdf_evals) / pixels});
     if (encoder) encoder->add_frame(f.display);
     progress.frame_done(i, f.seconds);
   }

@@ -21,7 +21,8 @@ std::string format_values(const std::vector<double>& v) {
 
 int run_scenes(const std::string& name) {
   if (name.empty()) {
-    for (const SceneInfo& s : all_scenes()) std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
+    for (const SceneInfo& s : all_scenes())
+      std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
     return 0;
   }
   const SceneInfo* s = find_scene(name);

@@ -73,7 +73,8 @@ int run_verify(const VerifyOptions& o) {
     return 1;
   }
   if (checked == 0) {
-    std::fprintf(stderr, "sdfreel: verify failed: the manifest lists none of the selected frames\n");
+    std::fprintf(stderr,
+                 "sdfreel: verify failed: the manifest lists none of the selected frames\n");
     return 1;
   }
   std::fprintf(stderr, "verified %d frames: all hashes match\n", checked);

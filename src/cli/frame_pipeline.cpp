@@ -73,14 +73,10 @@ std::map<std::string, std::string> frame_metadata(const Timeline& tl, const Rend
     std::snprintf(b, sizeof b, "%.17g", v);
     return std::string(b);
   };
-  return {{"timeline_sha256", tl.sha256},
-          {"scene", tl.scene},
-          {"frame", std::to_string(f.index)},
-          {"video_time", num(f.ctx.video_time)},
-          {"TIME", num(f.ctx.scene_time)},
-          {"camera", buf},
-          {"linear_md5", f.linear_hash},
-          {"display_md5", f.display_md5}};
+  return {{"timeline_sha256", tl.sha256},     {"scene", tl.scene},
+          {"frame", std::to_string(f.index)}, {"video_time", num(f.ctx.video_time)},
+          {"TIME", num(f.ctx.scene_time)},    {"camera", buf},
+          {"linear_md5", f.linear_hash},      {"display_md5", f.display_md5}};
 }
 
 }  // namespace sdfreel

@@ -14,7 +14,7 @@ namespace sdfreel {
 struct RenderedFrame {
   int index = 0;
   FrameContext ctx;
-  ImageRGBA linear;     // half-rounded
+  ImageRGBA linear;  // half-rounded
   ImageRGB16 display;
   std::string linear_hash, display_md5;
   RayStats stats;

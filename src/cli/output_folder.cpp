@@ -59,7 +59,8 @@ std::optional<ImageRGB16> load_checked_frame(const std::string& dir, const Manif
       const std::string p = frame_path(dir, entry.index, "exr");
       if (!std::filesystem::exists(p)) return fail(p + " is missing");
       ImageRGBA linear = read_exr(p);
-      if (linear_half_hash(linear) != entry.linear_hash) return fail(p + " differs from the manifest");
+      if (linear_half_hash(linear) != entry.linear_hash)
+        return fail(p + " differs from the manifest");
       if (!has("png")) {
         shown = display.apply(linear);
         if (md5_rgb48le(*shown) != entry.display_md5)

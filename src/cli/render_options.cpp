@@ -2,8 +2,13 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "backends/cpu/cpu_backend.h"
+#ifdef SDFREEL_HAVE_OSMESA
+#include "backends/osmesa/osmesa_backend.h"
+#endif
 #include "cli/errors.h"
 #include "cli/frame_range.h"
 #include "io/color.h"
@@ -30,7 +35,8 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("TIMELINE", o.timeline_path, "timeline file (TOML)")->required();
   cmd->add_option("--backend", o.backend, "cpu | osmesa")->check(CLI::IsMember({"cpu", "osmesa"}));
   cmd->add_option("--frames", o.frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
-  cmd->add_option("--shard", o.shard, "I/N: the I-th (0-based) of N contiguous parts of the frames");
+  cmd->add_option("--shard", o.shard,
+                  "I/N: the I-th (0-based) of N contiguous parts of the frames");
   cmd->add_option("--threads", o.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--resolution", o.resolution, "WxH, overrides the timeline");
@@ -75,7 +81,20 @@ std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
 
 std::unique_ptr<Backend> make_backend(const std::string& name, int threads) {
   if (name == "cpu") return std::make_unique<CpuBackend>(threads);
-  if (name == "osmesa") throw RenderError("the osmesa backend is not built into this sdfreel");
+  if (name == "osmesa") {
+#ifdef SDFREEL_HAVE_OSMESA
+    // llvmpipe reads its thread count when the first context is created; an explicit
+    // LP_NUM_THREADS in the environment wins over --threads.
+    if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
+    try {
+      return std::make_unique<OsmesaBackend>();
+    } catch (const std::exception& e) {
+      throw RenderError(std::string("cannot start the osmesa backend: ") + e.what());
+    }
+#else
+    throw RenderError("the osmesa backend is not built into this sdfreel (no OSMesa found)");
+#endif
+  }
   throw UsageError("unknown backend '" + name + "' (cpu | osmesa)");
 }
 

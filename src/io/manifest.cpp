@@ -18,10 +18,10 @@ using nlohmann::json;
 
 bool ManifestHeader::same_render_as(const ManifestHeader& o) const {
   return timeline_sha256 == o.timeline_sha256 && scene == o.scene && backend == o.backend &&
-         versions == o.versions && width == o.width && height == o.height &&
-         fps_num == o.fps_num && fps_den == o.fps_den && frame_count == o.frame_count &&
-         samples == o.samples && quality == o.quality && color_config == o.color_config &&
-         display == o.display && view == o.view;
+         versions == o.versions && width == o.width && height == o.height && fps_num == o.fps_num &&
+         fps_den == o.fps_den && frame_count == o.frame_count && samples == o.samples &&
+         quality == o.quality && color_config == o.color_config && display == o.display &&
+         view == o.view;
 }
 
 std::string manifest_to_json(const Manifest& m) {
@@ -41,8 +41,7 @@ std::string manifest_to_json(const Manifest& m) {
   j["codec"] = h.codec;
   j["video"] = h.video;
   j["frame_files"] = h.frame_files;
-  if (!m.frames.empty())
-    j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
+  if (!m.frames.empty()) j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
   json frames = json::array();
   for (const auto& [i, f] : m.frames)
     frames.push_back({{"index", f.index},
@@ -112,7 +111,8 @@ std::string framemd5_text(const Manifest& m) {
       "#format: frame checksums\n#version: 2\n#hash: MD5\n#tb 0: " + std::to_string(h.fps_den) +
       "/" + std::to_string(h.fps_num) +
       "\n#media_type 0: video\n#codec_id 0: rawvideo\n#dimensions 0: " + std::to_string(h.width) +
-      "x" + std::to_string(h.height) + "\n#sar 0: 1/1\n#stream#, dts,        pts, duration,     size, hash\n";
+      "x" + std::to_string(h.height) +
+      "\n#sar 0: 1/1\n#stream#, dts,        pts, duration,     size, hash\n";
   const long long size = 6LL * h.width * h.height;
   char line[256];
   for (const auto& [i, f] : m.frames) {
@@ -158,7 +158,8 @@ void write_both(const std::string& dir, const Manifest& m) {
 
 }  // namespace
 
-void record_frame(const std::string& dir, const ManifestHeader& header, const ManifestFrame& frame) {
+void record_frame(const std::string& dir, const ManifestHeader& header,
+                  const ManifestFrame& frame) {
   DirLock lock(dir);
   Manifest m = load_compatible(dir, header);
   m.frames[frame.index] = frame;

@@ -13,8 +13,8 @@ struct ManifestFrame {
   int index = 0;
   double video_time = 0.0;
   double scene_time = 0.0;
-  std::string linear_hash;   // MD5 of half RGBA (what the EXR stores)
-  std::string display_md5;   // MD5 of rgb48le display pixels (what framemd5 lists)
+  std::string linear_hash;  // MD5 of half RGBA (what the EXR stores)
+  std::string display_md5;  // MD5 of rgb48le display pixels (what framemd5 lists)
   double render_seconds = 0.0;
   double sdf_evals_per_pixel = 0.0;
 };
@@ -28,14 +28,15 @@ struct ManifestHeader {
   std::map<std::string, std::string> versions;
   int width = 0, height = 0;
   int64_t fps_num = 30, fps_den = 1;
-  int frame_count = 0;          // frames in the whole timeline
+  int frame_count = 0;  // frames in the whole timeline
   int samples = 1;
   std::string quality;
   std::string color_config, display, view;
-  std::string codec;            // of the timeline, used by `encode` as the default
-  std::string video;            // file name the timeline asks for ("" none)
+  std::string codec;                     // of the timeline, used by `encode` as the default
+  std::string video;                     // file name the timeline asks for ("" none)
   std::vector<std::string> frame_files;  // "exr", "png"
-  bool same_render_as(const ManifestHeader& o) const;  // all fields but timeline_path/versions order
+  bool same_render_as(
+      const ManifestHeader& o) const;  // all fields but timeline_path/versions order
 };
 
 struct Manifest {
@@ -44,7 +45,7 @@ struct Manifest {
 };
 
 std::string manifest_to_json(const Manifest& m);
-Manifest manifest_from_json(const std::string& text);   // throws std::runtime_error
+Manifest manifest_from_json(const std::string& text);            // throws std::runtime_error
 std::optional<Manifest> read_manifest(const std::string& path);  // nullopt if missing
 std::string framemd5_text(const Manifest& m);
 

@@ -1,8 +1,8 @@
 #include "io/versions.h"
 
 #include <OpenColorIO/OpenColorIO.h>
-#include <OpenImageIO/oiioversion.h>
 #include <OpenEXR/OpenEXRConfig.h>
+#include <OpenImageIO/oiioversion.h>
 
 extern "C" {
 #include <libavcodec/avcodec.h>

@@ -34,7 +34,8 @@ glm::vec3 primary_ray_dir(const CameraBasis& cam, float px, float py, int w, int
   // Screen coordinates: y in [-1, 1] top to bottom flipped, x scaled by the aspect ratio.
   const float sx = (2.0f * px - float(w)) / float(h);
   const float sy = (float(h) - 2.0f * py) / float(h);
-  glm::vec3 d = cam.forward + cam.right * (sx * cam.tan_half_fov) + cam.up * (sy * cam.tan_half_fov);
+  glm::vec3 d =
+      cam.forward + cam.right * (sx * cam.tan_half_fov) + cam.up * (sy * cam.tan_half_fov);
   return d / std::sqrt(glm::dot(d, d));
 }
 

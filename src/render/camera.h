@@ -1,5 +1,6 @@
 #pragma once
-// Pinhole camera: position/target/fov/roll (+Y up) turned into an orthonormal basis and primary rays.
+// Pinhole camera: position/target/fov/roll (+Y up) turned into an orthonormal basis and primary
+// rays.
 #include <glm/glm.hpp>
 
 namespace sdfreel {
@@ -22,7 +23,8 @@ struct CameraBasis {
 
 CameraBasis make_camera_basis(const CameraPose& pose);
 
-// Direction through image position (px, py) in pixels, origin top-left, y down; (w, h) the image size.
+// Direction through image position (px, py) in pixels, origin top-left, y down; (w, h) the image
+// size.
 glm::vec3 primary_ray_dir(const CameraBasis& cam, float px, float py, int w, int h);
 
 }  // namespace sdfreel

@@ -1,8 +1,8 @@
 #pragma once
 // Everything one frame depends on. A frame is a pure function of this struct (and the build).
 #include <cstdint>
-#include <vector>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "render/camera.h"
 #include "render/params.h"
@@ -12,8 +12,8 @@ namespace sdfreel {
 
 struct FrameContext {
   int frame_index = 0;
-  double video_time = 0.0;   // t_i = i / fps, seconds
-  double scene_time = 0.0;   // TIME, from the [time] curve; double so that 1e6 s keeps precision
+  double video_time = 0.0;  // t_i = i / fps, seconds
+  double scene_time = 0.0;  // TIME, from the [time] curve; double so that 1e6 s keeps precision
   int width = 64, height = 36;
   int samples = 1;
   uint64_t seed = 1;

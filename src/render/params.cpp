@@ -19,7 +19,9 @@ void ParamValues::set(const std::string& name, const std::vector<double>& v) {
   values_[index_of(name)] = v;
 }
 
-double ParamValues::scalar(const std::string& name) const { return values_[index_of(name)].at(0); }
+double ParamValues::scalar(const std::string& name) const {
+  return values_[index_of(name)].at(0);
+}
 
 glm::vec3 ParamValues::vec3(const std::string& name) const {
   const std::vector<double>& v = values_[index_of(name)];

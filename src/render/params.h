@@ -8,10 +8,10 @@ namespace sdfreel {
 
 struct ParamSpec {
   std::string name;
-  int components = 1;             // 1 = scalar, 3 = vector/colour
-  std::vector<double> def;        // default, `components` values
-  double min = 0.0, max = 1.0;    // inclusive range, applies to each component
-  std::string doc;                // one line: meaning and unit
+  int components = 1;           // 1 = scalar, 3 = vector/colour
+  std::vector<double> def;      // default, `components` values
+  double min = 0.0, max = 1.0;  // inclusive range, applies to each component
+  std::string doc;              // one line: meaning and unit
 };
 
 // Values for one frame, in the order of the scene's ParamSpec list.

@@ -26,9 +26,12 @@ std::optional<Quality> parse_quality(const std::string& name) {
 
 const char* quality_name(Quality q) {
   switch (q) {
-    case Quality::Draft: return "draft";
-    case Quality::Final: return "final";
-    case Quality::Reference: return "reference";
+    case Quality::Draft:
+      return "draft";
+    case Quality::Final:
+      return "final";
+    case Quality::Reference:
+      return "reference";
   }
   return "final";
 }

@@ -4,7 +4,9 @@ namespace sdfreel {
 
 namespace {
 
-double wrap01(double x) { return x - double(long(x < 0.0 ? x - 1.0 : x)); }
+double wrap01(double x) {
+  return x - double(long(x < 0.0 ? x - 1.0 : x));
+}
 
 }  // namespace
 

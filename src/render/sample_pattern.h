@@ -1,8 +1,8 @@
 #pragma once
 // Fixed sub-pixel sample positions: the R2 low-discrepancy sequence (Roberts 2018), the same for
 // every pixel, so a frame never depends on threads or tile order and both backends read one list.
-#include <vector>
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace sdfreel {
 

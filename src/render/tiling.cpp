@@ -28,9 +28,12 @@ void for_each_tile(int width, int height, int tile_size, int threads,
   // Dynamic scheduling (grain 1): tiles differ a lot in cost (sky vs. object).
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, n, 1), [&](const tbb::blocked_range<int>& r) {
-      for (int i = r.begin(); i != r.end(); ++i) run_one(i);
-    }, tbb::simple_partitioner());
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, n, 1),
+        [&](const tbb::blocked_range<int>& r) {
+          for (int i = r.begin(); i != r.end(); ++i) run_one(i);
+        },
+        tbb::simple_partitioner());
   });
 }
 

@@ -22,7 +22,9 @@ void check_golden(const std::string& name, const std::string& backend) {
          "scripts/regen-golden.sh and look at the frames before committing";
 }
 
-TEST(Golden, SdfMorphCpu) { check_golden("sdf_morph_small", "cpu"); }
+TEST(Golden, SdfMorphCpu) {
+  check_golden("sdf_morph_small", "cpu");
+}
 
 }  // namespace
 }  // namespace sdfreel::test

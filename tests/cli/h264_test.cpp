@@ -13,9 +13,9 @@ TEST(H264, StreamCarriesBt709TagsAndTvRange) {
   ASSERT_EQ(sdfreel("render t.toml", dir).status, 0);
   const RunResult p = run("ffprobe -v error -show_streams out/v.mp4", dir);
   ASSERT_EQ(p.status, 0) << p.err;
-  for (const char* want : {"codec_name=h264", "pix_fmt=yuv420p", "color_range=tv",
-                           "color_space=bt709", "color_transfer=bt709", "color_primaries=bt709",
-                           "nb_frames=3"})
+  for (const char* want :
+       {"codec_name=h264", "pix_fmt=yuv420p", "color_range=tv", "color_space=bt709",
+        "color_transfer=bt709", "color_primaries=bt709", "nb_frames=3"})
     EXPECT_NE(p.out.find(want), std::string::npos) << want << "\n" << p.out;
 }
 

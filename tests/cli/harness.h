@@ -20,7 +20,7 @@ std::string make_scratch_dir(const std::string& name);  // fresh, empty, under t
 void write_file(const std::string& path, const std::string& text);
 std::string read_file(const std::string& path);
 std::vector<std::string> framemd5_data_lines(const std::string& text);  // lines not starting with #
-std::string source_path(const std::string& rel);  // path in the source tree
+std::string source_path(const std::string& rel);                        // path in the source tree
 
 // A small sdf_morph timeline; `extra` is appended (more tables or keys).
 std::string small_timeline(int frames, const std::string& codec = "ffv1",

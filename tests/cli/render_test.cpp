@@ -41,9 +41,9 @@ TEST(Render, Framemd5MatchesStockFfmpegOnPngsAndOnFfv1Video) {
   write_file(dir + "/t.toml", small_timeline(3));
   ASSERT_EQ(sdfreel("render t.toml", dir).status, 0);
   const auto ours = framemd5_data_lines(read_file(dir + "/out/frames.framemd5"));
-  const RunResult png = run(
-      "ffmpeg -v error -i out/frames/%05d.png -pix_fmt rgb48le -fflags +bitexact -f framemd5 -",
-      dir);
+  const RunResult png =
+      run("ffmpeg -v error -i out/frames/%05d.png -pix_fmt rgb48le -fflags +bitexact -f framemd5 -",
+          dir);
   ASSERT_EQ(png.status, 0) << png.err;
   EXPECT_EQ(framemd5_data_lines(png.out), ours);
   const RunResult mkv =
@@ -57,7 +57,8 @@ TEST(Render, SameHashesForOneTwoAndFourThreads) {
   for (int threads : {1, 2, 4}) {
     const std::string dir = make_scratch_dir("render-threads-" + std::to_string(threads));
     write_file(dir + "/t.toml", small_timeline(3));
-    ASSERT_EQ(sdfreel("render t.toml --no-video --threads " + std::to_string(threads), dir).status, 0);
+    ASSERT_EQ(sdfreel("render t.toml --no-video --threads " + std::to_string(threads), dir).status,
+              0);
     results.push_back(read_file(dir + "/out/frames.framemd5"));
   }
   EXPECT_EQ(results[0], results[1]);

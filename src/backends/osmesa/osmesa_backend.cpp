@@ -1,0 +1,89 @@
+#include "backends/osmesa/osmesa_backend.h"
+
+#include <stdexcept>
+
+#include "backends/osmesa/frame_uniforms.h"
+#include "backends/osmesa/shader_dir.h"
+
+namespace sdfreel {
+
+namespace {
+
+// "4.5 (Core Profile) Mesa 22.3.6" -> "22.3.6".
+std::string mesa_version(const std::string& gl_version) {
+  const size_t at = gl_version.find("Mesa ");
+  if (at == std::string::npos) return "unknown";
+  const size_t start = at + 5;
+  const size_t end = gl_version.find(' ', start);
+  return gl_version.substr(start, end == std::string::npos ? end : end - start);
+}
+
+}  // namespace
+
+OsmesaBackend::OsmesaBackend() : platform_(std::make_unique<OsmesaPlatform>()) {
+  driver_ = std::make_unique<GlDriver>(*platform_, find_shader_dir());
+}
+
+OsmesaBackend::~OsmesaBackend() {
+  try {
+    platform_->make_current();  // the driver deletes its GL objects in this context
+    driver_.reset();
+  } catch (const GlPlatformError&) {
+    driver_.release();  // no context to delete them in: destroying the context frees them
+  }
+}
+
+std::map<std::string, std::string> OsmesaBackend::versions() const {
+  platform_->make_current();
+  const GlApi& gl = platform_->gl();
+  const std::string version = gl.string(GL_VERSION);
+  return {{"mesa", mesa_version(version)},
+          {"gl_version", version},
+          {"gl_renderer", gl.string(GL_RENDERER)}};
+}
+
+void OsmesaBackend::begin(const SceneInfo& scene) {
+  scene_ = scene.make ? scene.make() : nullptr;
+  if (!scene_) throw std::runtime_error("scene '" + scene.name + "' has no C++ implementation");
+  if (scene.shader.empty())
+    throw std::runtime_error("scene '" + scene.name +
+                             "' has no GLSL shader for the osmesa backend");
+  scene_name_ = scene.name;
+  platform_->make_current();
+  program_ = driver_->compile(
+      {"common/fullscreen.vert", scene.shader,
+       "#define SDFREEL_MAX_SAMPLES " + std::to_string(MAX_SHADER_SAMPLES) + "\n"});
+  // llvmpipe compiles the shader to machine code at its first draw, which takes seconds for a
+  // large scene: draw one pixel now, so that frame times (manifest, bench) measure rendering.
+  FrameContext warm_up;
+  warm_up.width = warm_up.height = 1;
+  warm_up.pose = scene.default_camera;
+  warm_up.params = ParamValues(&scene.params);
+  finish_frame_context(warm_up);
+  RayStats ignored;
+  render(warm_up, ignored);
+}
+
+ImageRGBA OsmesaBackend::render(const FrameContext& ctx, RayStats& stats) {
+  if (!scene_) throw std::logic_error("OsmesaBackend::render before begin");
+  platform_->make_current();
+  scene_->prepare(ctx);
+  GlPass pass;
+  pass.name = scene_name_;
+  pass.program = program_;
+  pass.target = platform_->frame_target(ctx.width, ctx.height);
+  pass.uniforms = frame_uniforms(ctx);
+  for (ShaderUniform& u : scene_->shader_uniforms()) pass.uniforms.push_back(std::move(u));
+  for (const ShaderTexture& t : scene_->shader_textures())
+    pass.textures.push_back({t.name, driver_->upload_texture(t)});
+  driver_->run(pass);
+  ImageRGBA img = driver_->read_rgba(pass.target);
+  // The shader writes each pixel's SDF evaluation count into alpha (exact: < 2^24 per pixel).
+  for (size_t i = 3; i < img.pixels.size(); i += 4) {
+    stats.sdf_evals += uint64_t(img.pixels[i]);
+    img.pixels[i] = 1.0f;
+  }
+  return img;
+}
+
+}  // namespace sdfreel

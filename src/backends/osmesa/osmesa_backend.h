@@ -1,0 +1,34 @@
+#pragma once
+// The OSMesa backend: a scene's GLSL twin (shaders/<scene>.glsl) on Mesa's llvmpipe. Per frame it
+// runs the C++ scene's prepare() for its per-frame constants, hands the shader the same
+// FrameContext the CPU backend reads, draws one full-screen pass into the float frame target
+// and reads the linear image back.
+#include <memory>
+
+#include "backends/osmesa/gl_driver.h"
+#include "backends/osmesa/osmesa_platform.h"
+#include "render/backend.h"
+#include "scenes/scene.h"
+
+namespace sdfreel {
+
+class OsmesaBackend : public Backend {
+ public:
+  // Creates the context and finds the shader folder; throws GlPlatformError or ShaderError.
+  OsmesaBackend();
+  ~OsmesaBackend() override;
+  std::string name() const override { return "osmesa"; }
+  // mesa (e.g. 22.3.6), gl_renderer, gl_version.
+  std::map<std::string, std::string> versions() const override;
+  void begin(const SceneInfo& scene) override;
+  ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
+
+ private:
+  std::unique_ptr<OsmesaPlatform> platform_;
+  std::unique_ptr<GlDriver> driver_;  // destroyed before the platform (needs its context)
+  std::unique_ptr<Scene> scene_;
+  std::string scene_name_;
+  GlProgramId program_ = -1;
+};
+
+}  // namespace sdfreel

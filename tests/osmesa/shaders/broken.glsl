@@ -1,0 +1,3 @@
+#include "broken_lib.glsl"
+out vec4 frag;
+void main() { frag = vec4(broken(1.0)); }
