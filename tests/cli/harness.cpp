@@ -18,7 +18,9 @@ RunResult run(const std::string& command, const std::string& cwd) {
   static int counter = 0;
   const std::string id = std::to_string(::getpid()) + "-" + std::to_string(counter++);
   const std::string out = (dir / ("out-" + id)).string(), err = (dir / ("err-" + id)).string();
-  const std::string full = "cd '" + cwd + "' && " + command + " >'" + out + "' 2>'" + err + "'";
+  // Braces: the whole command (even one with `&` or `;`) runs in `cwd` with both streams captured.
+  const std::string full =
+      "cd '" + cwd + "' && { " + command + "\n} >'" + out + "' 2>'" + err + "'";
   const int raw = std::system(full.c_str());
   RunResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -117,11 +117,17 @@ TEST(Render, EncodeRefusesAFrameThatDiffersFromTheManifest) {
 
 TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
   const std::string dir = make_scratch_dir("render-kill");
-  write_file(dir + "/t.toml", small_timeline(40));
-  // Kill the render after a moment, mid-run.
-  run("timeout -s KILL 1.5 '" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video", dir);
+  write_file(dir + "/t.toml", small_timeline(120));
+  // SIGKILL the render as soon as the manifest lists three frames: mid-run however fast the machine.
+  const RunResult killed = run(
+      "'" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video & pid=$!; " +
+      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.json 2>/dev/null); " +
+      "[ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
+      dir);
+  EXPECT_EQ(killed.out, "137\n") << "the render was not killed: " << killed.err;
   const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
-  ASSERT_LT(m["frames"].size(), 40u) << "render finished before the kill: make it longer";
+  ASSERT_LT(m["frames"].size(), 120u) << "render finished before the kill";
+  ASSERT_GE(m["frames"].size(), 3u);
   // Every listed frame is on disk, complete and matches its hash; the resume finishes the job.
   const RunResult r = sdfreel("render t.toml --no-video --resume", dir);
   ASSERT_EQ(r.status, 0) << r.err;
