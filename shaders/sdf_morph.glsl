@@ -36,6 +36,9 @@ const float SURFACE_BIAS_FACTOR = 2.0;
 const float MIN_SURFACE_BIAS = 2e-3;
 const float NO_HIT = -1.0;
 const float MISS_SPAN = 1e30;
+const float HIT_ID_NONE = 0.0;
+const float HIT_ID_OBJECT = 1.0;
+const float HIT_ID_PEDESTAL = 2.0;
 
 const float SHADOW_TMIN = 0.01;
 const float SHADOW_HIT_EPS = 1e-3;
@@ -73,7 +76,7 @@ float intersectFloor(vec3 ro, vec3 rd) {
 float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_per_t,
             precise float t_before, MorphUniforms u, inout RayStats stats) {
   precise float t = tmin;
-  precise float omega = u.step_factor;
+  precise float omega = u.naive != 0 ? 1.0 : u.step_factor;
   precise float prev_d = 0.0;
   precise float step = 0.0;
   for (int i = 0; i < max_steps; ++i) {
@@ -85,7 +88,7 @@ float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_p
       omega = 1.0;
       continue;
     }
-    precise float eps = dm_max(MIN_HIT_EPS, eps_per_t * (t_before + t));
+    precise float eps = u.naive != 0 ? u.hit_eps : dm_max(MIN_HIT_EPS, eps_per_t * (t_before + t));
     if (d < eps) return t;
     step = d * omega;
     prev_d = d;
@@ -101,7 +104,16 @@ float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_p
   return t;
 }
 
-float hitEps(float eps_per_t, float t) { return dm_max(MIN_HIT_EPS, eps_per_t * t); }
+float hitEps(float eps_per_t, float t, MorphUniforms u) {
+  return u.naive != 0 ? u.hit_eps : dm_max(MIN_HIT_EPS, eps_per_t * t);
+}
+float normalEps(float pixel_angle, float t, MorphUniforms u) {
+  return u.naive != 0 ? u.normal_eps : dm_max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * t);
+}
+vec2 groupSpan(vec3 ro, vec3 rd, MorphUniforms u) {
+  if (u.naive != 0) return vec2(0.0, u.max_dist);
+  return intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+}
 float surfaceBias(float eps) { return dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps); }
 
 vec3 reflectDir(vec3 d, vec3 n) { return d - 2.0 * dm_dot(n, d) * n; }
@@ -150,7 +162,7 @@ void occlusion(vec3 p, vec3 n, float bias, bool full, MorphUniforms u, inout Ray
   ao = 1.0;
   if (!full) return;
   if (dm_dot(n, u.boxes[0].dir) > 0.0) shadow = softShadow(p + n * bias, u.boxes[0].dir, u, stats);
-  if (dm_length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH)
+  if (u.naive != 0 || dm_length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH)
     ao = ambientOcclusion(p, n, u, stats);
 }
 
@@ -183,16 +195,16 @@ vec3 shadeObject(vec3 p, vec3 n, vec3 rd, vec3 reflection, float bias, bool full
 
 vec3 traceReflection(vec3 p, vec3 n, vec3 r, float t_before, float eps_per_t, float pixel_angle,
                      MorphUniforms u, inout RayStats stats) {
-  precise vec3 ro = p + n * surfaceBias(hitEps(eps_per_t, t_before));
+  precise vec3 ro = p + n * surfaceBias(hitEps(eps_per_t, t_before, u));
   precise float t_floor = intersectFloor(ro, r);
   precise float tmax = t_floor > 0.0 ? dm_min(t_floor, u.max_dist) : u.max_dist;
-  precise vec2 span = intersectSphere(ro, r, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  precise vec2 span = groupSpan(ro, r, u);
   precise float t0 = dm_max(span.x, 0.0), t1 = dm_min(span.y, tmax);
   if (t0 < t1) {
     precise float t = march(ro, r, t0, t1, u.reflect_steps, eps_per_t, t_before, u, stats);
     if (t != NO_HIT) {
       precise vec3 q = ro + r * t;
-      precise float e = dm_max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * (t_before + t));
+      precise float e = normalEps(pixel_angle, t_before + t, u);
       precise vec3 nq = calcNormal(q, e, u, stats);
       if (isObject(q, u))
         return shadeObject(q, nq, r, environment(reflectDir(r, nq), u), 0.0, false, u, stats);
@@ -216,7 +228,7 @@ vec3 environment(vec3 d, MorphUniforms u) {
 }
 
 float softShadow(vec3 ro, vec3 rd, MorphUniforms u, inout RayStats stats) {
-  precise vec2 span = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  precise vec2 span = groupSpan(ro, rd, u);
   if (span.y <= 0.0) return 1.0;
   precise float t = dm_max(SHADOW_TMIN, span.x);
   precise float res = 1.0;
@@ -255,15 +267,16 @@ vec3 sceneRadiance(Ray ray, MorphUniforms u, inout RayStats stats) {
   precise float t_floor = intersectFloor(ro, rd);
   bool floor_visible = t_floor > 0.0 && t_floor < u.max_dist;
   precise float tmax = floor_visible ? t_floor : u.max_dist;
-  precise vec2 span = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  precise vec2 span = groupSpan(ro, rd, u);
   precise float t0 = dm_max(span.x, 0.0), t1 = dm_min(span.y, tmax);
   if (t0 < t1) {
     precise float t = march(ro, rd, t0, t1, u.max_steps, eps_per_t, 0.0, u, stats);
     if (t != NO_HIT) {
       precise vec3 p = ro + rd * t;
-      precise float e = dm_max(MIN_NORMAL_EPS, u.normal_eps * ray.pixel_angle * t);
+      if (u.hit_mask != 0) return vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL);
+      precise float e = normalEps(ray.pixel_angle, t, u);
       precise vec3 n = calcNormal(p, e, u, stats);
-      precise float bias = surfaceBias(hitEps(eps_per_t, t));
+      precise float bias = surfaceBias(hitEps(eps_per_t, t, u));
       if (isObject(p, u)) {
         precise vec3 refl =
             traceReflection(p, n, reflectDir(rd, n), t, eps_per_t, ray.pixel_angle, u, stats);
@@ -272,8 +285,9 @@ vec3 sceneRadiance(Ray ray, MorphUniforms u, inout RayStats stats) {
       return shadePedestal(p, n, rd, bias, true, u, stats);
     }
   }
+  if (u.hit_mask != 0) return vec3(HIT_ID_NONE);
   if (floor_visible) {
-    precise float bias = surfaceBias(hitEps(eps_per_t, t_floor));
+    precise float bias = surfaceBias(hitEps(eps_per_t, t_floor, u));
     return shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats);
   }
   return environment(rd, u);

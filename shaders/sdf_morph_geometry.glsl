@@ -75,8 +75,13 @@ float mapPedestal(vec3 p) {
                     PEDESTAL_CORNER);
 }
 
+// The naive preset uses no bounding volume: always the exact distance.
 float mapSceneBounded(vec3 p, MorphUniforms u, float margin, out bool exact) {
   precise float pedestal = mapPedestal(p);
+  if (u.naive != 0) {
+    exact = true;
+    return opUnion(mapObject(p, u), pedestal);
+  }
   precise float bound = dm_length(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
   if (bound > margin) {
     exact = pedestal <= bound;

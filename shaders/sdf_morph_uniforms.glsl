@@ -28,4 +28,6 @@ struct MorphUniforms {
   float step_factor;
   float normal_eps;
   float max_dist;
+  int naive;     // MarchSettings::naive (0 or 1)
+  int hit_mask;  // MarchSettings::hit_mask (0 or 1)
 };

@@ -40,7 +40,7 @@ uniform vec3 u_camera_right;
 uniform vec3 u_camera_up;
 uniform vec3 u_camera_forward;
 uniform float u_tan_half_fov;
-uniform float u_pixel_angle;  // 2 tan(fov / 2) / height, as the CPU backend computes it
+uniform float u_pixel_angle;  // footprint_angle() of src/render/quality.h, as the CPU backend has it
 uniform MarchSettings u_march;
 uniform int u_sample_count;
 uniform float u_inv_samples;  // 1 / sample count, computed on the host like the CPU backend

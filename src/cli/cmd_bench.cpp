@@ -1,27 +1,54 @@
-// `sdfreel bench [SCENE...]`: seconds per frame of each scene, backend and quality preset, timed
-// by Google Benchmark (median of repetitions) on the same frames in one run.
-#include <benchmark/benchmark.h>
-
+// `sdfreel bench SCENE...`: speed against error. For every scene (a built-in scene's default
+// timeline, or a timeline file), backend and configuration (the presets naive, draft and final,
+// and a sweep over the march parameters), render the same frames, time them (median of
+// repetitions in this process) and compare them with a reference render of the same frames: the
+// reference preset with many samples, on the CPU backend, rendered once and cached under
+// DIR/reference/ by the timeline's hash and the reference settings. Writes the table to stdout,
+// DIR/bench.csv and DIR/bench_<scene>.png (the src/bench/ library does the measuring and drawing).
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
 
+#include "bench/csv.h"
+#include "bench/metrics.h"
+#include "bench/pareto.h"
+#include "bench/plot.h"
+#include "bench/reference_cache.h"
+#include "bench/sweep.h"
+#include "bench/table.h"
 #include "cli/commands_impl.h"
 #include "cli/frame_range.h"
 #include "scenes/registry.h"
+#include "timeline/sha256.h"
 
 namespace sdfreel {
 
 namespace {
+
+using bench::BenchConfig;
+using bench::BenchRow;
+
+// The targets for the presets (README "Speed against error").
+constexpr double FINAL_MIN_PSNR_DB = 40.0;
+constexpr double DRAFT_MIN_SPEEDUP = 4.0;
 
 struct BenchOptions {
   std::vector<std::string> scenes;
   std::string resolution = "320x180";
   std::string frames = "0-2";
   std::string backends = "cpu";
-  std::string qualities = "draft,final";
-  int samples = 1;
+  std::string out = "output/bench";
   int repetitions = 3;
   int threads = 0;
+  bool presets_only = false;
+  std::vector<std::string> only;  // name prefixes of the configurations to run
+  bool fresh_reference = false;
+  bool all_rows = false;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -37,89 +64,265 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-// A timeline for the bench: the scene's defaults, its default camera, 30 fps.
-Timeline bench_timeline(const std::string& scene, int w, int h, int samples, Quality q) {
+// What one bench argument names: a timeline and the frames to render of it.
+struct BenchTarget {
+  std::string label;  // scene name, or the timeline file's stem
   Timeline tl;
-  tl.path = "(bench)";
-  tl.scene = scene;
-  tl.width = w;
-  tl.height = h;
-  tl.samples = samples;
-  tl.quality = q;
-  tl.duration = 10.0;
-  return tl;
+  std::string timeline_hash;
+  std::vector<int> frames;
+};
+
+BenchTarget load_target(const std::string& arg, const BenchOptions& o) {
+  BenchTarget t;
+  if (find_scene(arg)) {
+    // A scene's default timeline: its defaults, its default camera, 10 s at 30 fps, seed 1.
+    t.label = arg;
+    t.tl.path = "(bench: " + arg + ")";
+    t.tl.scene = arg;
+    t.tl.duration = 10.0;
+    t.timeline_hash = sha256_hex("sdfreel bench default timeline\nscene=" + arg +
+                                 "\nfps=30/1\nduration=10\nseed=1\n");
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(o.resolution.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' ||
+        w < 1 || h < 1)
+      throw UsageError("--resolution '" + o.resolution + "': expected WxH, e.g. 320x180");
+    t.tl.width = w;
+    t.tl.height = h;
+  } else if (std::filesystem::exists(arg)) {
+    RenderOptions ro;
+    ro.timeline_path = arg;
+    ro.resolution = o.resolution;
+    t.tl = load_with_overrides(ro);
+    t.label = std::filesystem::path(arg).stem().string();
+    t.timeline_hash = t.tl.sha256;
+  } else {
+    throw UsageError("'" + arg + "' is neither a scene (see `sdfreel scenes`) nor a timeline file");
+  }
+  t.frames = parse_frame_list(o.frames, t.tl.frame_count());
+  return t;
+}
+
+// Frame `frame` of the target as `cfg` renders it; `mask`: the hit-mask variant at one sample
+// per pixel (the pixel centre), so that hit/miss compares the same ray in both renders.
+FrameContext bench_context(const FramePipeline& pipe, int frame, const BenchConfig& cfg,
+                           bool mask) {
+  FrameContext ctx = frame_context(pipe.timeline(), pipe.scene(), frame);
+  ctx.quality = cfg.quality;
+  ctx.samples = mask ? 1 : cfg.samples;
+  finish_frame_context(ctx);
+  ctx.march = cfg.march;
+  ctx.march.hit_mask = mask;
+  return ctx;
+}
+
+struct Reference {
+  std::vector<ImageRGB16> display;
+  std::vector<ImageRGBA> mask;
+};
+
+Reference reference_of(const BenchTarget& t, const BenchOptions& o) {
+  const BenchConfig cfg = bench::reference_config();
+  const std::string key =
+      bench::reference_key(t.timeline_hash, bench::settings_text(cfg), t.tl.width, t.tl.height);
+  const bench::ReferenceCache cache(o.out, key);
+  Reference ref;
+  std::unique_ptr<FramePipeline> pipe;  // made only when a frame is missing
+  for (int frame : t.frames) {
+    ImageRGB16 display;
+    ImageRGBA mask;
+    if (o.fresh_reference || !cache.load(frame, t.tl.width, t.tl.height, display, mask)) {
+      if (!pipe) pipe = std::make_unique<FramePipeline>(t.tl, make_backend("cpu", o.threads));
+      std::fprintf(stderr, "bench: %s reference frame %d (%s, %d samples)\n", t.label.c_str(),
+                   frame, cfg.name.c_str(), cfg.samples);
+      display = pipe->render_context(bench_context(*pipe, frame, cfg, false)).display;
+      mask = pipe->render_context(bench_context(*pipe, frame, cfg, true)).linear;
+      cache.store(frame, display, mask);
+    }
+    ref.display.push_back(std::move(display));
+    ref.mask.push_back(std::move(mask));
+  }
+  std::fprintf(stderr, "bench: %s reference in %s\n", t.label.c_str(), cache.folder().c_str());
+  return ref;
+}
+
+BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& backend,
+                 const BenchConfig& cfg, const Reference& ref, int repetitions) {
+  BenchRow row;
+  row.scene = t.label;
+  row.backend = backend;
+  row.preset = cfg.name;
+  row.named_preset = cfg.named_preset;
+  row.march = cfg.march;
+  row.samples = cfg.samples;
+  std::vector<FrameContext> contexts;
+  for (int frame : t.frames) contexts.push_back(bench_context(pipe, frame, cfg, false));
+  bench::ErrorAccumulator error;
+  RayStats stats;
+  std::vector<double> per_frame;
+  for (int rep = 0; rep < repetitions; ++rep) {
+    double seconds = 0.0;
+    for (size_t i = 0; i < contexts.size(); ++i) {
+      const RenderedFrame f = pipe.render_context(contexts[i]);
+      seconds += f.seconds;
+      if (rep == 0) {  // frames are deterministic: the other repetitions only time
+        error.add(f.display, ref.display[i]);
+        stats.add(f.stats);
+      }
+    }
+    per_frame.push_back(seconds / double(contexts.size()));
+  }
+  std::sort(per_frame.begin(), per_frame.end());
+  const size_t n = per_frame.size();
+  row.seconds_per_frame =
+      n % 2 ? per_frame[n / 2] : 0.5 * (per_frame[n / 2 - 1] + per_frame[n / 2]);
+  bench::HitMissAccumulator hits;
+  for (size_t i = 0; i < t.frames.size(); ++i)
+    hits.add(pipe.render_context(bench_context(pipe, t.frames[i], cfg, true)).linear, ref.mask[i]);
+  const bench::ErrorMetrics m = error.result();
+  row.psnr_db = m.psnr_db;
+  row.rmse = m.rmse;
+  row.mean_abs_error = m.mean_abs_error;
+  row.p99_abs_error = m.p99_abs_error;
+  row.hitmiss_fraction = hits.fraction();
+  const double pixels = double(t.tl.width) * t.tl.height * double(t.frames.size());
+  row.sdf_evals_per_pixel = double(stats.sdf_evals) / pixels;
+  // Only the CPU backend counts rays that ran out of steps (the shader reports SDF evaluations).
+  row.capped_per_pixel =
+      backend == "cpu" ? double(stats.capped) / pixels : std::numeric_limits<double>::quiet_NaN();
+  return row;
+}
+
+void mark_fronts(std::vector<BenchRow>& rows) {
+  std::map<std::string, std::vector<size_t>> groups;
+  for (size_t i = 0; i < rows.size(); ++i)
+    groups[rows[i].scene + "\n" + rows[i].backend].push_back(i);
+  for (const auto& [key, idx] : groups) {
+    std::vector<bench::SpeedError> pts;
+    for (size_t i : idx) pts.push_back({rows[i].seconds_per_frame, rows[i].psnr_db});
+    const std::vector<bool> front = bench::pareto_front(pts);
+    for (size_t k = 0; k < idx.size(); ++k) rows[idx[k]].on_front = front[k];
+  }
+}
+
+// The presets' targets, checked on this run's numbers.
+void print_preset_check(const std::vector<BenchRow>& rows) {
+  std::map<std::string, const BenchRow*> draft, final_;
+  for (const BenchRow& r : rows) {
+    if (r.preset == "draft") draft[r.scene + " " + r.backend] = &r;
+    if (r.preset == "final") final_[r.scene + " " + r.backend] = &r;
+  }
+  std::printf("\npreset targets: final >= %.0f dB, draft >= %.0fx faster than final\n",
+              FINAL_MIN_PSNR_DB, DRAFT_MIN_SPEEDUP);
+  for (const auto& [key, f] : final_) {
+    const auto d = draft.find(key);
+    const double speedup =
+        d != draft.end() ? f->seconds_per_frame / d->second->seconds_per_frame : 0.0;
+    std::printf("  %-28s final %6.2f dB %s   draft %5.1fx faster %s\n", key.c_str(), f->psnr_db,
+                f->psnr_db >= FINAL_MIN_PSNR_DB ? "ok  " : "MISS", speedup,
+                speedup >= DRAFT_MIN_SPEEDUP ? "ok" : "MISS");
+  }
 }
 
 int run_bench(const BenchOptions& o) {
-  int w = 0, h = 0;
-  if (std::sscanf(o.resolution.c_str(), "%dx%d", &w, &h) != 2 || w < 1 || h < 1)
-    throw UsageError("--resolution '" + o.resolution + "': expected WxH");
-  std::vector<std::string> scenes = o.scenes;
-  if (scenes.empty())
-    for (const SceneInfo& s : all_scenes()) scenes.push_back(s.name);
-  for (const std::string& s : scenes)
-    if (!find_scene(s)) throw UsageError("unknown scene '" + s + "'");
-  std::vector<Quality> qualities;
-  for (const std::string& q : split(o.qualities)) {
-    auto parsed = parse_quality(q);
-    if (!parsed) throw UsageError("unknown quality '" + q + "'");
-    qualities.push_back(*parsed);
-  }
-  // Timelines and pipelines live until RunSpecifiedBenchmarks returns.
-  std::vector<std::unique_ptr<Timeline>> timelines;
-  std::vector<std::unique_ptr<FramePipeline>> pipelines;
-  for (const std::string& scene : scenes)
-    for (const std::string& backend : split(o.backends))
-      for (Quality q : qualities) {
-        timelines.push_back(std::make_unique<Timeline>(bench_timeline(scene, w, h, o.samples, q)));
-        const std::vector<int> frames = parse_frame_list(o.frames, timelines.back()->frame_count());
-        pipelines.push_back(
-            std::make_unique<FramePipeline>(*timelines.back(), make_backend(backend, o.threads)));
-        FramePipeline* pipe = pipelines.back().get();
-        const std::string name = scene + "/" + backend + "/" + quality_name(q);
-        benchmark::RegisterBenchmark(
-            name.c_str(),
-            [pipe, frames](benchmark::State& state) {
-              size_t k = 0;
-              double evals = 0.0;
-              for (auto _ : state) {
-                RenderedFrame f = pipe->render(frames[k++ % frames.size()]);
-                evals += double(f.stats.sdf_evals);
-                benchmark::DoNotOptimize(f.display.pixels.data());
-              }
-              const double pixels = double(pipe->timeline().width) * pipe->timeline().height;
-              state.counters["sdf_evals_per_pixel"] = evals / (pixels * double(state.iterations()));
-            })
-            ->Unit(benchmark::kMillisecond)
-            ->Iterations(int64_t(frames.size()))
-            ->Repetitions(o.repetitions)
-            ->ReportAggregatesOnly(true)
-            ->UseRealTime();
+  if (o.scenes.empty()) throw UsageError("bench: name at least one scene or timeline");
+  if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
+  std::vector<BenchTarget> targets;
+  for (const std::string& s : o.scenes) targets.push_back(load_target(s, o));
+  const std::vector<std::string> backends = split(o.backends);
+  std::vector<BenchConfig> configs = bench::preset_configs();
+  if (!o.presets_only)
+    for (const BenchConfig& c : bench::sweep_configs())
+      if (std::none_of(configs.begin(), configs.end(),
+                       [&](const BenchConfig& k) { return bench::same_settings(k, c); }))
+        configs.push_back(c);
+  if (!o.only.empty())
+    configs.erase(std::remove_if(configs.begin(), configs.end(),
+                                 [&](const BenchConfig& c) {
+                                   return std::none_of(o.only.begin(), o.only.end(),
+                                                       [&](const std::string& p) {
+                                                         return c.name.rfind(p, 0) == 0;
+                                                       });
+                                 }),
+                  configs.end());
+  std::filesystem::create_directories(o.out);
+
+  std::vector<BenchRow> rows;
+  int failures = 0;
+  for (const BenchTarget& t : targets) {
+    const Reference ref = reference_of(t, o);
+    for (const std::string& backend : backends) {
+      std::unique_ptr<FramePipeline> pipe;
+      try {
+        pipe = std::make_unique<FramePipeline>(t.tl, make_backend(backend, o.threads));
+      } catch (const UsageError&) {
+        throw;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench: skipping %s on %s: %s\n", t.label.c_str(), backend.c_str(),
+                     e.what());
+        ++failures;
+        continue;
       }
-  int argc = 1;
-  char arg0[] = "sdfreel-bench";
-  char* argv[] = {arg0, nullptr};
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+      for (const BenchConfig& cfg : configs) {
+        try {
+          rows.push_back(measure(*pipe, t, backend, cfg, ref, o.repetitions));
+          const BenchRow& r = rows.back();
+          std::fprintf(stderr, "bench: %s %s %-22s %8.4f s/frame %7.2f dB\n", t.label.c_str(),
+                       backend.c_str(), cfg.name.c_str(), r.seconds_per_frame, r.psnr_db);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "bench: skipping %s on %s, %s: %s\n", t.label.c_str(),
+                       backend.c_str(), cfg.name.c_str(), e.what());
+          ++failures;
+        }
+      }
+    }
+  }
+  mark_fronts(rows);
+  std::fputs(bench::format_table(rows, o.all_rows).c_str(), stdout);
+  if (!o.all_rows)
+    std::printf("(named presets and Pareto-front points; every row is in %s/bench.csv)\n",
+                o.out.c_str());
+  print_preset_check(rows);
+  bench::write_csv_file(o.out + "/bench.csv", rows);
+  for (const BenchTarget& t : targets) {
+    std::vector<BenchRow> mine;
+    for (const BenchRow& r : rows)
+      if (r.scene == t.label) mine.push_back(r);
+    if (mine.empty()) continue;
+    const std::string path = o.out + "/bench_" + t.label + ".png";
+    const std::string title = t.label + ": speed against error, " + std::to_string(t.tl.width) +
+                              "x" + std::to_string(t.tl.height) + ", " +
+                              std::to_string(t.frames.size()) + " frames";
+    bench::plot_speed_error(mine, title, path);
+    std::printf("plot: %s\n", path.c_str());
+  }
+  std::printf("csv: %s/bench.csv\n", o.out.c_str());
+  return failures && rows.empty() ? 1 : 0;
 }
 
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& status) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "seconds per frame per scene, backend and preset");
-  cmd->add_option("SCENE", o->scenes, "scenes (default: all)");
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "speed against error of each scene, backend and march preset, with a sweep");
+  cmd->add_option("SCENE", o->scenes, "scene names (their default timeline) or timeline files")
+      ->required();
   cmd->add_option("--resolution", o->resolution, "WxH of the bench frames")->capture_default_str();
-  cmd->add_option("--frames", o->frames, "frames of a 10 s, 30 fps default timeline")
+  cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-2 or 0,30,60")
       ->capture_default_str();
   cmd->add_option("--backends", o->backends, "comma-separated: cpu,osmesa")->capture_default_str();
-  cmd->add_option("--qualities", o->qualities, "comma-separated presets")->capture_default_str();
-  cmd->add_option("--samples", o->samples, "samples per pixel")->capture_default_str();
-  cmd->add_option("--repetitions", o->repetitions, "runs of each case; medians are reported")
+  cmd->add_option("--out", o->out, "folder for bench.csv, the plots and the reference cache")
+      ->capture_default_str();
+  cmd->add_option("--repetitions", o->repetitions, "timed runs of each case; the median is kept")
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (default: all cores)");
+  cmd->add_option("--only", o->only, "run only configurations whose names start with these")
+      ->delimiter(',');
+  cmd->add_flag("--presets-only", o->presets_only, "naive, draft and final only, no sweep");
+  cmd->add_flag("--fresh-reference", o->fresh_reference,
+                "render the reference again (after a change of scene code)");
+  cmd->add_flag("--all", o->all_rows, "print every row, not only presets and the front");
   cmd->callback([o, &status] { status = run_bench(*o); });
 }
 

@@ -5,16 +5,46 @@ namespace sdfreel {
 // The one place where preset numbers live. hit_eps and normal_eps are in units of the pixel
 // footprint at unit distance: the renderer multiplies them by t * pixel_angle, so precision follows
 // what a pixel can show instead of a fixed world-space epsilon.
+float footprint_angle(float tan_half_fov, int height) {
+  const float angle = 2.0f * tan_half_fov / float(height);
+  return angle < MAX_FOOTPRINT_ANGLE ? angle : MAX_FOOTPRINT_ANGLE;
+}
+
 MarchSettings march_settings(Quality q) {
   switch (q) {
     case Quality::Draft:
-      return MarchSettings{96, 1.0f, 1.2f, 1.0f, 24, 48, 80.0f};
+      return MarchSettings{96, 0.05f, 1.2f, 0.25f, 24, 48, 120.0f};
     case Quality::Final:
-      return MarchSettings{256, 0.25f, 1.2f, 0.5f, 64, 128, 120.0f};
+      return MarchSettings{256, 0.05f, 1.2f, 0.25f, 64, 128, 200.0f};
     case Quality::Reference:
       return MarchSettings{1024, 0.05f, 1.0f, 0.25f, 256, 512, 200.0f};
   }
   return march_settings(Quality::Final);
+}
+
+// The textbook loop: `if (d < 0.001) break; t += d;` for at most 256 steps, the far limit of
+// `final`, and a 1e-3 world-unit normal step. Here hit_eps and normal_eps are world units.
+MarchSettings naive_march_settings() {
+  MarchSettings m{256, 1e-3f, 1.0f, 1e-3f, 64, 128, 120.0f};
+  m.naive = true;
+  return m;
+}
+
+int preset_samples(Quality q) {
+  switch (q) {
+    case Quality::Draft:
+      return 1;
+    case Quality::Final:
+      return 16;
+    case Quality::Reference:
+      return 64;
+  }
+  return 4;
+}
+
+// The baseline at the sample count of `final`, so that the two differ only in how they march.
+int naive_preset_samples() {
+  return preset_samples(Quality::Final);
 }
 
 std::optional<Quality> parse_quality(const std::string& name) {

@@ -1,5 +1,7 @@
 #pragma once
 // March precision presets. Every number that a preset sets lives in quality.cpp, nowhere else.
+// `sdfreel bench` measures each preset's speed against its error and README.md records why the
+// numbers are what they are.
 #include <optional>
 #include <string>
 
@@ -15,9 +17,32 @@ struct MarchSettings {
   int shadow_steps;   // soft-shadow step cap
   int reflect_steps;  // secondary (reflection) ray step cap
   float max_dist;     // far limit of primary rays
+  // The baseline everybody writes first, for the bench: plain sphere tracing (step factor 1),
+  // hit_eps and normal_eps in world units (a fixed epsilon, not a pixel footprint), no bounding
+  // volumes and no cell walk. Scenes honour it in both backends.
+  bool naive = false;
+  // Debug output for the bench's hit/miss measure: radiance is the id of the surface the primary
+  // ray's march hit (0 = none; each scene numbers its marched surfaces 1, 2, ...) in all three
+  // channels, instead of a colour.
+  bool hit_mask = false;
 };
 
+// The pixel footprint (radians at unit distance) that hit_eps and normal_eps are measured in:
+// 2 tan(fov/2) / height, the size of a pixel at the image centre, but at most
+// MAX_FOOTPRINT_ANGLE. Hard cases fov_wide and resolution_1x1 guard the cap: with a 175 degree
+// field of view or a 1-pixel-high image a pixel spans tens of degrees, and epsilons that large
+// hit (and take normals) a sizeable fraction of the distance away from the surface, so the
+// shading point, not the silhouette, goes wrong. Both backends take this one value.
+constexpr float MAX_FOOTPRINT_ANGLE = 0.01f;
+float footprint_angle(float tan_half_fov, int height);
+
 MarchSettings march_settings(Quality q);
+// The `naive` bench preset: plain sphere tracing with a fixed world-space epsilon.
+MarchSettings naive_march_settings();
+// Samples per pixel at which the bench measured a preset (README "Speed against error"): a
+// preset's error budget holds at this sample count or more.
+int preset_samples(Quality q);
+int naive_preset_samples();
 std::optional<Quality> parse_quality(const std::string& name);
 const char* quality_name(Quality q);
 

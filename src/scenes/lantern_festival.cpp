@@ -18,6 +18,11 @@ const glm::vec3 SKY_AMBIENT(0.012f, 0.018f, 0.035f);
 // Cells of the per-frame table: every cell a primary or reflected ray can reach (two max_dist).
 constexpr int CELL_TABLE_MAX_RADIUS = 160;
 
+// MarchSettings::hit_mask output: which marched surface the primary ray hit.
+constexpr float HIT_ID_NONE = 0.0f;
+constexpr float HIT_ID_LANTERN = 1.0f;
+constexpr float HIT_ID_WATER = 2.0f;
+
 float param(const FrameContext& ctx, const char* name) {
   return float(ctx.params.scalar(name));
 }
@@ -89,8 +94,23 @@ glm::vec3 LanternFestivalScene::applyFog(const glm::vec3& col, float t) const {
   return dm::mix(col, sky_.fog_color, 1.0f - dm::exp(-fog_density_ * t));
 }
 
+float LanternFestivalScene::normalEps(float t, float pixel_angle) const {
+  if (march_.naive) return march_.normal_eps;  // world units
+  return dm::max(march_.normal_eps * t * pixel_angle, 1e-4f);
+}
+
+MarchLimits LanternFestivalScene::limits(int max_steps, float pixel_angle, float t_offset) const {
+  MarchLimits lim{max_steps, march_.hit_eps, march_.step_factor, pixel_angle, t_offset};
+  lim.naive = march_.naive;
+  return lim;
+}
+
 CellHit LanternFestivalScene::marchLanterns(const glm::vec3& o, const glm::vec3& dir, float t_max,
                                             const MarchLimits& lim, RayStats& stats) const {
+  if (march_.naive) {
+    const NaiveHit h = marchNaive(field_, o, dir, t_max, false, lim, stats);
+    return {h.hit, h.t, h.cell};
+  }
   if (!reference_march_) return marchCells(field_, o, dir, 0.0f, t_max, lim, stats);
   // The seed's way: sphere tracing of repeated(), then the lantern nearest to the hit.
   const MarchHit h = march(field_, o, dir, 0.0f, t_max, lim, stats);
@@ -103,7 +123,7 @@ glm::vec3 LanternFestivalScene::shadeLanternHit(const glm::vec3& o, const glm::v
                                                 const CellHit& hit, float t_total,
                                                 float pixel_angle) const {
   const glm::vec3 p = o + dir * hit.t;
-  const float eps = dm::max(march_.normal_eps * t_total * pixel_angle, 1e-4f);
+  const float eps = normalEps(t_total, pixel_angle);
   LanternHit h;
   h.p = p;
   h.n = lanternNormal(field_.grid, hit.cell, p, eps);
@@ -115,22 +135,38 @@ glm::vec3 LanternFestivalScene::shadeLanternHit(const glm::vec3& o, const glm::v
 
 glm::vec3 LanternFestivalScene::shadeWater(const glm::vec3& p, const glm::vec3& dir, float t,
                                            float pixel_angle, RayStats& stats) const {
-  const float eps = dm::max(march_.normal_eps * t * pixel_angle, 1e-4f);
+  const float eps = normalEps(t, pixel_angle);
   const glm::vec3 normal = waterNormal(field_.lake, p, eps);
   const glm::vec3 r = dir - normal * (2.0f * glm::dot(normal, dir));  // reflect(dir, normal)
-  MarchLimits lim{march_.reflect_steps, march_.hit_eps, march_.step_factor, pixel_angle, t};
+  const MarchLimits lim = limits(march_.reflect_steps, pixel_angle, t);
   const CellHit hit = marchLanterns(p, r, march_.max_dist, lim, stats);
   const glm::vec3 reflected =
       hit.hit ? shadeLanternHit(p, r, hit, t + hit.t, pixel_angle) : skyReflected(sky_, r);
   return reflected * reflection_strength_ + water_color_;
 }
 
+// The naive preset: one plain sphere trace of lanterns and lake together.
+void LanternFestivalScene::marchPrimaryNaive(const Ray& ray, MarchHit& water, CellHit& lantern,
+                                             RayStats& stats) const {
+  const MarchLimits lim = limits(march_.max_steps, ray.pixel_angle, 0.0f);
+  const NaiveHit h = marchNaive(field_, ray.origin, ray.dir, march_.max_dist, true, lim, stats);
+  water = MarchHit{h.hit && h.water, h.t};
+  lantern = CellHit{h.hit && !h.water, h.t, h.cell};
+}
+
 glm::vec3 LanternFestivalScene::radiance(const Ray& ray, RayStats& stats) const {
-  const MarchLimits lim{march_.max_steps, march_.hit_eps, march_.step_factor, ray.pixel_angle,
-                        0.0f};
-  const MarchHit water = marchWater(field_.lake, ray.origin, ray.dir, march_.max_dist, lim, stats);
-  const float t_far = water.hit ? water.t : march_.max_dist;
-  const CellHit lantern = marchLanterns(ray.origin, ray.dir, t_far, lim, stats);
+  MarchHit water;
+  CellHit lantern;
+  if (march_.naive) {
+    marchPrimaryNaive(ray, water, lantern, stats);
+  } else {
+    const MarchLimits lim = limits(march_.max_steps, ray.pixel_angle, 0.0f);
+    water = marchWater(field_.lake, ray.origin, ray.dir, march_.max_dist, lim, stats);
+    const float t_far = water.hit ? water.t : march_.max_dist;
+    lantern = marchLanterns(ray.origin, ray.dir, t_far, lim, stats);
+  }
+  if (march_.hit_mask)
+    return glm::vec3(lantern.hit ? HIT_ID_LANTERN : water.hit ? HIT_ID_WATER : HIT_ID_NONE);
   if (lantern.hit)
     return applyFog(shadeLanternHit(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle),
                     lantern.t);

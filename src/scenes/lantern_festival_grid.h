@@ -107,8 +107,9 @@ inline float lanternDistance(const GridFrame& g, const LanternCell& c, const glm
   return sdfLantern(toLocal(c, d) * g.inv_scale) * g.scale;
 }
 
-// The 2 x 2 neighbour order: sign() with sign(0) = +1, so that a point exactly on a cell's centre
-// line still looks at two distinct columns instead of the same one twice.
+// The 2 x 2 neighbour order (tests/hard_cases/cell_centre_rays): sign() with sign(0) = +1, so that
+// a point exactly on a cell's centre line still looks at two distinct columns instead of the same
+// one twice.
 inline float neighbourSign(float x) {
   return x < 0.0f ? -1.0f : 1.0f;
 }

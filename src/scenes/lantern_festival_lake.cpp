@@ -13,8 +13,9 @@ LakeFrame make_lake_frame(double time, float amplitude, float speed) {
     k.dir[i] = glm::vec2(WAVE_DIRS[i][0], WAVE_DIRS[i][1]);
     k.amp[i] = a;
     k.freq[i] = w;
-    // Every wave of the seed shares TIME * 2.5; one wrapped phase per wave keeps the door open
-    // for per-wave speeds and mirrors the GLSL uniform array.
+    // Wrapped in double: a float TIME moves in steps of 1/16 s at 1e6 s and 64 s at 1e9 s
+    // (tests/hard_cases/time_1e6, time_1e9). Every wave of the seed shares TIME * 2.5; one wrapped
+    // phase per wave keeps the door open for per-wave speeds and mirrors the GLSL uniform array.
     k.phase[i] = dm::wrap_phase(time * double(speed), two_pi);
     k.lipschitz += a * w;
     k.max_height += a;

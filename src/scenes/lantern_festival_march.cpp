@@ -35,12 +35,19 @@ MarchHit sphereTrace(const Sdf& sdf, const glm::vec3& o, const glm::vec3& dir, f
       relaxed = false;
       continue;
     }
+    // An eye inside a lantern sees d < 0 at once: a hit at t0 (tests/hard_cases/inside_lantern).
     if (d < lim.eps_at(t)) return {true, t};
     t_prev = t;
     d_prev = d;
     t += d * lim.step_factor;
     relaxed = lim.step_factor > 1.0f;
-    if (t > t1) return {};
+    if (t > t1) {
+      // Only a plain step may end the march: a relaxed one may have jumped over a surface just
+      // before t1 (a lantern's base seen down its axis: tests/hard_cases/ray_along_lantern_axis).
+      if (!relaxed || t_prev + d_prev > t1) return {};
+      t = t_prev + d_prev;
+      relaxed = false;
+    }
   }
   return {};
 }
@@ -73,7 +80,9 @@ bool boundInterval(const GridFrame& g, const glm::vec3& c, const glm::vec3& o, c
   } else if (dm::abs(o.y - c.y) > h) {
     return false;
   }
-  // Circle in xz, from the closest approach (no cancellation for distant cells).
+  // Circle in xz, from the closest approach (no cancellation for distant cells:
+  // tests/hard_cases/far_camera_lake). A vertical ray (a = 0) is inside or outside as a whole
+  // (tests/hard_cases/ray_along_lantern_axis).
   const float ox = o.x - c.x, oz = o.z - c.z;
   const float a = dir.x * dir.x + dir.z * dir.z;
   if (a > 0.0f) {
@@ -132,10 +141,36 @@ CellHit marchCells(const LanternField& f, const glm::vec3& o, const glm::vec3& d
   return {};
 }
 
+NaiveHit marchNaive(const LanternField& f, const glm::vec3& o, const glm::vec3& dir, float t_max,
+                    bool with_water, const MarchLimits& lim, RayStats& stats) {
+  MarchLimits plain = lim;
+  plain.step_factor = 1.0f;
+  const auto field = [&f, with_water](const glm::vec3& p) {
+    const float lanterns = repeated(f, p, true);
+    return with_water ? dm::min(lanterns, sdfWater(f.lake, p)) : lanterns;
+  };
+  int budget = lim.max_steps;
+  const MarchHit h = sphereTrace(field, o, dir, 0.0f, t_max, plain, budget, stats);
+  if (!h.hit) {
+    if (budget <= 0) ++stats.capped;
+    return {};
+  }
+  NaiveHit out;
+  out.hit = true;
+  out.t = h.t;
+  const glm::vec3 p = o + dir * h.t;
+  const NearestLantern near = nearestLantern(f, p);
+  out.water = with_water && sdfWater(f.lake, p) < near.distance;
+  out.cell = near.cell;
+  return out;
+}
+
 MarchHit marchWater(const LakeFrame& lake, const glm::vec3& o, const glm::vec3& dir, float t_max,
                     const MarchLimits& lim, RayStats& stats) {
   const float top = -WATER_PLANE_OFFSET + lake.max_height;
   float t = 0.0f;
+  // An eye at or below the crests starts marching at t = 0, where the gap may be small or
+  // negative (a hit at once): tests/hard_cases/just_above_water, under_water.
   if (o.y > top) {
     if (dir.y >= 0.0f) return {};
     t = (top - o.y) / dir.y;
@@ -147,7 +182,12 @@ MarchHit marchWater(const LakeFrame& lake, const glm::vec3& o, const glm::vec3& 
   float t_prev = t, free_prev = 0.0f;
   bool relaxed = false;
   for (int i = 0; i < lim.max_steps; ++i) {
-    if (t > t_max) return {};
+    if (t > t_max) {
+      // As in sphereTrace: only a plain step may end the march.
+      if (!relaxed || t_prev + free_prev > t_max) return {};
+      t = t_prev + free_prev;
+      relaxed = false;
+    }
     const glm::vec3 p = o + dir * t;
     const float gap = sdfWater(lake, p);
     ++stats.sdf_evals;
@@ -160,7 +200,8 @@ MarchHit marchWater(const LakeFrame& lake, const glm::vec3& o, const glm::vec3& 
       continue;
     }
     if (gap < lim.eps_at(t)) return {true, t};
-    // Rising out of the wave slab, or never closing the gap: no hit.
+    // Rising out of the wave slab, or never closing the gap: no hit (a ray grazing the crests
+    // towards the horizon ends here instead of creeping: tests/hard_cases/horizon_grazing).
     if (rate <= 0.0f || (p.y > top && dir.y >= 0.0f)) return {};
     t_prev = t;
     free_prev = gap / rate;

@@ -22,7 +22,8 @@ struct MarchLimits {
   float step_factor = 1.0f;  // over-relaxation
   float pixel_angle = 1e-3f;
   float t_offset = 0.0f;  // distance already travelled (reflections): the footprint grows with it
-  float eps_at(float t) const { return hit_eps * (t_offset + t) * pixel_angle; }
+  bool naive = false;     // MarchSettings::naive: hit_eps is a fixed world-space threshold
+  float eps_at(float t) const { return naive ? hit_eps : hit_eps * (t_offset + t) * pixel_angle; }
 };
 
 struct MarchHit {
@@ -45,6 +46,18 @@ CellHit marchCells(const LanternField& f, const glm::vec3& o, const glm::vec3& d
 // The ray's interval inside a lantern's bounding cylinder (vertical axis through c); false if none.
 bool boundInterval(const GridFrame& g, const glm::vec3& c, const glm::vec3& o, const glm::vec3& dir,
                    float& t0, float& t1);
+
+// The naive preset's march: plain sphere tracing (factor 1) of the exact lantern field, and of the
+// lake too when `with_water`, over [0, t_max]: no slabs, bounding cylinders or cell walk. The
+// lake's vertical gap is stepped as if it were a distance, as the textbook loop does.
+struct NaiveHit {
+  bool hit = false;
+  bool water = false;  // the hit is the lake's (else a lantern's)
+  float t = 0.0f;
+  LanternCell cell{};  // the lantern hit
+};
+NaiveHit marchNaive(const LanternField& f, const glm::vec3& o, const glm::vec3& dir, float t_max,
+                    bool with_water, const MarchLimits& lim, RayStats& stats);
 
 // The lake along o + t dir for t in [0, t_max].
 MarchHit marchWater(const LakeFrame& lake, const glm::vec3& o, const glm::vec3& dir, float t_max,

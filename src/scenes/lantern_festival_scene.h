@@ -50,6 +50,10 @@ class LanternFestivalScene : public Scene {
   glm::vec3 shadeWater(const glm::vec3& p, const glm::vec3& dir, float t, float pixel_angle,
                        RayStats& stats) const;
   glm::vec3 applyFog(const glm::vec3& col, float t) const;
+  // Normal step at path length t: a pixel footprint, or (naive preset) a world-space constant.
+  float normalEps(float t, float pixel_angle) const;
+  MarchLimits limits(int max_steps, float pixel_angle, float t_offset) const;
+  void marchPrimaryNaive(const Ray& ray, MarchHit& water, CellHit& lantern, RayStats& stats) const;
 
   std::shared_ptr<const LanternTextures> textures_;
   LanternField field_;

@@ -52,6 +52,8 @@ glm::vec3 shadeOpaque(const LightFrame& L, const GridFrame& g, const LanternHit&
 
 }  // namespace
 
+// flicker_strength 0 blends to the steady middle value, nothing divides by it
+// (tests/hard_cases/flicker_zero).
 float candleStrength(const LightFrame& L, const LanternCell& cell) {
   const float flicker =
       dm::mix(FLICKER_LO, FLICKER_HI, flickerValue(L.flicker_time + cell.flicker_phase));

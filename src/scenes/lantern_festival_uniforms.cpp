@@ -102,6 +102,8 @@ std::vector<ShaderUniform> LanternFestivalScene::shader_uniforms() const {
       .f("reflection_strength", reflection_strength_)
       .f("fog_density", fog_density_)
       .f("reference_march", reference_march_ ? 1.0f : 0.0f)
+      .f("naive", march_.naive ? 1.0f : 0.0f)
+      .f("hit_mask", march_.hit_mask ? 1.0f : 0.0f)
       .append_to(all);
   return all;
 }

@@ -106,9 +106,14 @@ inline float mapPedestal(const glm::vec3& p) {
 
 // Distance to object and pedestal, exact within `margin` of the object's bounding sphere; beyond
 // it the sphere's distance stands in for the object's (a lower bound). `exact` tells which.
+// The naive preset uses no bounding volume: always the exact distance.
 inline float mapSceneBounded(const glm::vec3& p, const MorphUniforms& u, float margin,
                              bool& exact) {
   const float pedestal = mapPedestal(p);
+  if (u.naive) {
+    exact = true;
+    return opUnion(mapObject(p, u), pedestal);
+  }
   const float bound = glm::length(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
   if (bound > margin) {
     exact = pedestal <= bound;

@@ -40,6 +40,10 @@ constexpr float SURFACE_BIAS_FACTOR = 2.0f;  // secondary rays start this many h
 constexpr float MIN_SURFACE_BIAS = 2e-3f;
 constexpr float NO_HIT = -1.0f;
 constexpr float MISS_SPAN = 1e30f;
+// MarchSettings::hit_mask output: which marched surface the primary ray hit.
+constexpr float HIT_ID_NONE = 0.0f;
+constexpr float HIT_ID_OBJECT = 1.0f;
+constexpr float HIT_ID_PEDESTAL = 2.0f;
 
 constexpr float SHADOW_TMIN = 0.01f;
 constexpr float SHADOW_HIT_EPS = 1e-3f;
@@ -55,7 +59,7 @@ constexpr float AO_REACH = AO_START + AO_SPAN;
 
 // (t_enter, t_exit) of the ray with a sphere; (MISS_SPAN, -MISS_SPAN) when it misses. The
 // discriminant is r^2 - (distance of the centre from the ray)^2, not b^2 - c, which would cancel
-// catastrophically for a camera far away.
+// catastrophically for a camera far away (tests/hard_cases/far_camera_object).
 vec2 intersectSphere(const vec3& ro, const vec3& rd, const vec3& center, float radius) {
   const vec3 oc = ro - center;
   const float b = glm::dot(oc, rd);
@@ -79,10 +83,11 @@ float intersectFloor(const vec3& ro, const vec3& rd) {
 // (t_before + t), t_before being the length of the path before this ray (for reflections).
 // Returns t of the hit, or NO_HIT. A ray that runs out of steps counts as a hit where it
 // stopped (it is creeping along a surface) and is counted in stats.capped.
+// The naive preset: plain steps and a fixed world-space threshold u.hit_eps.
 float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_steps, float eps_per_t,
             float t_before, const MorphUniforms& u, RayStats& stats) {
   float t = tmin;
-  float omega = u.step_factor;
+  float omega = u.naive ? 1.0f : u.step_factor;
   float prev_d = 0.0f;
   float step = 0.0f;
   for (int i = 0; i < max_steps; ++i) {
@@ -94,7 +99,9 @@ float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_step
       omega = 1.0f;
       continue;
     }
-    const float eps = dm::max(MIN_HIT_EPS, eps_per_t * (t_before + t));
+    const float eps = u.naive ? u.hit_eps : dm::max(MIN_HIT_EPS, eps_per_t * (t_before + t));
+    // An eye inside the object sees d < 0 at once: a hit at tmin
+    // (tests/hard_cases/inside_object).
     if (d < eps) return t;
     step = d * omega;
     prev_d = d;
@@ -112,8 +119,17 @@ float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_step
   return t;
 }
 
-float hitEps(float eps_per_t, float t) {
-  return dm::max(MIN_HIT_EPS, eps_per_t * t);
+float hitEps(float eps_per_t, float t, const MorphUniforms& u) {
+  return u.naive ? u.hit_eps : dm::max(MIN_HIT_EPS, eps_per_t * t);
+}
+float normalEps(float pixel_angle, float t, const MorphUniforms& u) {
+  return u.naive ? u.normal_eps : dm::max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * t);
+}
+// The part of a ray worth marching: inside the sphere around object and pedestal, or (naive
+// preset, no bounding volumes) everything up to max_dist.
+vec2 groupSpan(const vec3& ro, const vec3& rd, const MorphUniforms& u) {
+  if (u.naive) return vec2(0.0f, u.max_dist);
+  return intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
 }
 float surfaceBias(float eps) {
   return dm::max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps);
@@ -173,7 +189,7 @@ void occlusion(const vec3& p, const vec3& n, float bias, bool full, const MorphU
   if (!full) return;
   if (glm::dot(n, u.boxes[0].dir) > 0.0f)
     shadow = softShadow(p + n * bias, u.boxes[0].dir, u, stats);
-  if (glm::length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH)
+  if (u.naive || glm::length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH)
     ao = ambientOcclusion(p, n, u, stats);
 }
 
@@ -210,16 +226,16 @@ vec3 shadeObject(const vec3& p, const vec3& n, const vec3& rd, const vec3& refle
 // the floor, or the studio. Surfaces found here are shaded without further bounces or shadows.
 vec3 traceReflection(const vec3& p, const vec3& n, const vec3& r, float t_before, float eps_per_t,
                      float pixel_angle, const MorphUniforms& u, RayStats& stats) {
-  const vec3 ro = p + n * surfaceBias(hitEps(eps_per_t, t_before));
+  const vec3 ro = p + n * surfaceBias(hitEps(eps_per_t, t_before, u));
   const float t_floor = intersectFloor(ro, r);
   const float tmax = t_floor > 0.0f ? dm::min(t_floor, u.max_dist) : u.max_dist;
-  const vec2 span = intersectSphere(ro, r, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  const vec2 span = groupSpan(ro, r, u);
   const float t0 = dm::max(span.x, 0.0f), t1 = dm::min(span.y, tmax);
   if (t0 < t1) {
     const float t = march(ro, r, t0, t1, u.reflect_steps, eps_per_t, t_before, u, stats);
     if (t != NO_HIT) {
       const vec3 q = ro + r * t;
-      const float e = dm::max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * (t_before + t));
+      const float e = normalEps(pixel_angle, t_before + t, u);
       const vec3 nq = calcNormal(q, e, u, stats);
       if (isObject(q, u))
         return shadeObject(q, nq, r, environment(reflectDir(r, nq), u), 0.0f, false, u, stats);
@@ -245,7 +261,7 @@ vec3 environment(const vec3& d, const MorphUniforms& u) {
 
 float softShadow(const vec3& ro, const vec3& rd, const MorphUniforms& u, RayStats& stats) {
   // Only the pedestal group casts shadows: march just the part of the ray inside its sphere.
-  const vec2 span = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  const vec2 span = groupSpan(ro, rd, u);
   if (span.y <= 0.0f) return 1.0f;
   float t = dm::max(SHADOW_TMIN, span.x);
   float res = 1.0f;
@@ -289,15 +305,16 @@ vec3 sceneRadiance(const Ray& ray, const MorphUniforms& u, RayStats& stats) {
   const float t_floor = intersectFloor(ro, rd);
   const bool floor_visible = t_floor > 0.0f && t_floor < u.max_dist;
   const float tmax = floor_visible ? t_floor : u.max_dist;
-  const vec2 span = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  const vec2 span = groupSpan(ro, rd, u);
   const float t0 = dm::max(span.x, 0.0f), t1 = dm::min(span.y, tmax);
   if (t0 < t1) {
     const float t = march(ro, rd, t0, t1, u.max_steps, eps_per_t, 0.0f, u, stats);
     if (t != NO_HIT) {
       const vec3 p = ro + rd * t;
-      const float e = dm::max(MIN_NORMAL_EPS, u.normal_eps * ray.pixel_angle * t);
+      if (u.hit_mask) return vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL);
+      const float e = normalEps(ray.pixel_angle, t, u);
       const vec3 n = calcNormal(p, e, u, stats);
-      const float bias = surfaceBias(hitEps(eps_per_t, t));
+      const float bias = surfaceBias(hitEps(eps_per_t, t, u));
       if (isObject(p, u)) {
         const vec3 refl =
             traceReflection(p, n, reflectDir(rd, n), t, eps_per_t, ray.pixel_angle, u, stats);
@@ -306,8 +323,9 @@ vec3 sceneRadiance(const Ray& ray, const MorphUniforms& u, RayStats& stats) {
       return shadePedestal(p, n, rd, bias, true, u, stats);
     }
   }
+  if (u.hit_mask) return vec3(HIT_ID_NONE);  // the floor is a plane, not marched
   if (floor_visible) {
-    const float bias = surfaceBias(hitEps(eps_per_t, t_floor));
+    const float bias = surfaceBias(hitEps(eps_per_t, t_floor, u));
     return shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats);
   }
   return environment(rd, u);

@@ -75,6 +75,8 @@ MorphUniforms make_morph_uniforms(const FrameContext& ctx) {
   u.step_factor = m.step_factor;
   u.normal_eps = m.normal_eps;
   u.max_dist = m.max_dist;
+  u.naive = m.naive;
+  u.hit_mask = m.hit_mask;
   return u;
 }
 
@@ -104,6 +106,8 @@ std::vector<ShaderUniform> morph_shader_uniforms(const MorphUniforms& u) {
       f("step_factor", u.step_factor),
       f("normal_eps", u.normal_eps),
       f("max_dist", u.max_dist),
+      f("naive", u.naive ? 1.0f : 0.0f),
+      f("hit_mask", u.hit_mask ? 1.0f : 0.0f),
   };
   for (int i = 0; i < SOFTBOX_COUNT; ++i) {
     const SoftBox& b = u.boxes[i];

@@ -43,6 +43,8 @@ struct MorphUniforms {
   float step_factor = 1.2f;
   float normal_eps = 0.5f;  // in pixel footprints
   float max_dist = 120.0f;
+  bool naive = false;     // MarchSettings::naive: world-space epsilons, no bounds, factor 1
+  bool hit_mask = false;  // MarchSettings::hit_mask: radiance = hit id (1 object, 2 pedestal)
 };
 
 // Reads TIME, the parameters and the march settings from ctx. ctx.params must hold this scene's

@@ -14,7 +14,8 @@ namespace sdfreel {
 // Length below which a vector has no usable direction.
 constexpr float SAFE_NORMALIZE_MIN_LENGTH2 = 1e-30f;
 
-// normalize() that never divides by zero: a (near-)zero vector maps to +Y.
+// normalize() that never divides by zero: a (near-)zero vector maps to +Y (a tetrahedron normal
+// whose taps cancel at a crease of min/max: tests/hard_cases/crease_normals).
 inline glm::vec3 safe_normalize(const glm::vec3& v) {
   const float len2 = glm::dot(v, v);
   if (!(len2 > SAFE_NORMALIZE_MIN_LENGTH2)) return glm::vec3(0.0f, 1.0f, 0.0f);
@@ -131,7 +132,8 @@ inline float opIntersection(float d1, float d2) {
   return dm::max(d1, d2);
 }
 
-// Polynomial smooth minimum with blend radius k; k <= 0 is the hard operation (no division by 0).
+// Polynomial smooth minimum with blend radius k; k <= 0 is the hard operation (no division by 0:
+// tests/hard_cases/smooth_union_k0).
 inline float opSmoothUnion(float d1, float d2, float k) {
   if (!(k > 0.0f)) return opUnion(d1, d2);
   const float h = dm::clamp(0.5f + 0.5f * (d2 - d1) / k, 0.0f, 1.0f);

@@ -53,7 +53,7 @@ struct Image {
 Image render(const FrameContext& ctx) {
   std::unique_ptr<Scene> scene = info().make();
   scene->prepare(ctx);
-  const float pixel_angle = 2.0f * ctx.camera.tan_half_fov / float(ctx.height);
+  const float pixel_angle = footprint_angle(ctx.camera.tan_half_fov, ctx.height);
   Image img;
   for (int y = 0; y < ctx.height; ++y)
     for (int x = 0; x < ctx.width; ++x) {
@@ -256,7 +256,7 @@ TEST(SdfMorphScene, HandsItsFrameConstantsToTheShader) {
     EXPECT_EQ(int(s.values.size()), s.components) << s.name;
     EXPECT_TRUE(by_name.emplace(s.name, s.values).second) << "duplicate " << s.name;
   }
-  EXPECT_EQ(by_name.size(), 15u + 6u * sdf_morph::SOFTBOX_COUNT);  // every field of the struct
+  EXPECT_EQ(by_name.size(), 17u + 6u * sdf_morph::SOFTBOX_COUNT);  // every field of the struct
   EXPECT_EQ(by_name.at("u_morph.morph"), std::vector<float>{u.morph});
   EXPECT_EQ(by_name.at("u_morph.rot_sin"), std::vector<float>{u.rot_sin});
   EXPECT_EQ(by_name.at("u_morph.max_steps"), std::vector<float>{float(ctx.march.max_steps)});

@@ -21,8 +21,9 @@ ImageRGBA CpuBackend::render(const FrameContext& ctx, RayStats& stats) {
   ImageRGBA img(ctx.width, ctx.height);
   const int n_tiles = tile_count(ctx.width, ctx.height, tile_size_);
   std::vector<RayStats> tile_stats(n_tiles);
-  // Angular size of one pixel at the image centre: the hit epsilon grows with t * pixel_angle.
-  const float pixel_angle = 2.0f * ctx.camera.tan_half_fov / float(ctx.height);
+  // Angular size of one pixel at the image centre, capped (quality.h): the hit epsilon grows with
+  // t * pixel_angle.
+  const float pixel_angle = footprint_angle(ctx.camera.tan_half_fov, ctx.height);
   const float inv_samples = 1.0f / float(ctx.sample_offsets.size());
   const Scene& scene = *scene_;
   for_each_tile(ctx.width, ctx.height, tile_size_, threads_, [&](const Tile& t) {

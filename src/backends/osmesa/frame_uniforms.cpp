@@ -34,7 +34,7 @@ std::vector<ShaderUniform> frame_uniforms(const FrameContext& ctx) {
       vec3("u_camera_forward", cam.forward),
       scalar("u_tan_half_fov", cam.tan_half_fov),
       // Same expressions as CpuBackend::render, evaluated in float on the host.
-      scalar("u_pixel_angle", 2.0f * cam.tan_half_fov / float(ctx.height)),
+      scalar("u_pixel_angle", footprint_angle(cam.tan_half_fov, ctx.height)),
       scalar("u_inv_samples", 1.0f / float(n)),
       scalar("u_sample_count", float(n)),
       scalar("u_march.max_steps", float(m.max_steps)),

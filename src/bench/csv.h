@@ -1,0 +1,19 @@
+#pragma once
+// bench.csv: one row per scene, backend and configuration.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_row.h"
+
+namespace sdfreel::bench {
+
+std::vector<std::string> csv_columns();
+void write_csv(std::ostream& out, const std::vector<BenchRow>& rows);
+// Writes DIR/bench.csv atomically enough for a report: to a temporary name, then renamed.
+void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows);
+
+// Splits one CSV line (no quoting: bench.csv has none) — for tests and tools.
+std::vector<std::string> split_csv_line(const std::string& line);
+
+}  // namespace sdfreel::bench
