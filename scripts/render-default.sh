@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-exec build/sdfreel render timelines/sdf_morph.toml "$@"
+exec build/sdfreel render timelines/lantern_festival.toml "$@"
