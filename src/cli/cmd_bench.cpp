@@ -43,7 +43,7 @@ struct BenchOptions {
   std::string frames = "0-2";
   std::string backends = "cpu";
   std::string out = "output/bench";
-  int repetitions = 3;
+  int repetitions = 5;
   int threads = 0;
   bool presets_only = false;
   std::vector<std::string> only;  // name prefixes of the configurations to run
@@ -146,8 +146,29 @@ Reference reference_of(const BenchTarget& t, const BenchOptions& o) {
   return ref;
 }
 
+// Seconds per frame of one pass over the target's frames.
+double time_frames(FramePipeline& pipe, const std::vector<FrameContext>& contexts) {
+  double seconds = 0.0;
+  for (const FrameContext& ctx : contexts) seconds += pipe.render_context(ctx).seconds;
+  return seconds / double(contexts.size());
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<FrameContext> bench_contexts(const FramePipeline& pipe, const BenchTarget& t,
+                                         const BenchConfig& cfg) {
+  std::vector<FrameContext> contexts;
+  for (int frame : t.frames) contexts.push_back(bench_context(pipe, frame, cfg, false));
+  return contexts;
+}
+
+// The errors and the first timed pass of one configuration; run_bench adds the other passes.
 BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& backend,
-                 const BenchConfig& cfg, const Reference& ref, int repetitions) {
+                 const BenchConfig& cfg, const Reference& ref, std::vector<double>& times) {
   BenchRow row;
   row.scene = t.label;
   row.backend = backend;
@@ -155,27 +176,18 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   row.named_preset = cfg.named_preset;
   row.march = cfg.march;
   row.samples = cfg.samples;
-  std::vector<FrameContext> contexts;
-  for (int frame : t.frames) contexts.push_back(bench_context(pipe, frame, cfg, false));
+  const std::vector<FrameContext> contexts = bench_contexts(pipe, t, cfg);
   bench::ErrorAccumulator error;
   RayStats stats;
-  std::vector<double> per_frame;
-  for (int rep = 0; rep < repetitions; ++rep) {
-    double seconds = 0.0;
-    for (size_t i = 0; i < contexts.size(); ++i) {
-      const RenderedFrame f = pipe.render_context(contexts[i]);
-      seconds += f.seconds;
-      if (rep == 0) {  // frames are deterministic: the other repetitions only time
-        error.add(f.display, ref.display[i]);
-        stats.add(f.stats);
-      }
-    }
-    per_frame.push_back(seconds / double(contexts.size()));
+  double seconds = 0.0;
+  for (size_t i = 0; i < contexts.size(); ++i) {
+    const RenderedFrame f = pipe.render_context(contexts[i]);
+    seconds += f.seconds;
+    error.add(f.display, ref.display[i]);
+    stats.add(f.stats);
   }
-  std::sort(per_frame.begin(), per_frame.end());
-  const size_t n = per_frame.size();
-  row.seconds_per_frame =
-      n % 2 ? per_frame[n / 2] : 0.5 * (per_frame[n / 2 - 1] + per_frame[n / 2]);
+  times.push_back(seconds / double(contexts.size()));
+  row.seconds_per_frame = times.back();
   bench::HitMissAccumulator hits;
   for (size_t i = 0; i < t.frames.size(); ++i)
     hits.add(pipe.render_context(bench_context(pipe, t.frames[i], cfg, true)).linear, ref.mask[i]);
@@ -263,18 +275,34 @@ int run_bench(const BenchOptions& o) {
         ++failures;
         continue;
       }
+      // Errors first, then the timed repetitions as whole passes over every configuration, so
+      // that a burst of load from elsewhere on the machine lands on one repetition of many
+      // configurations (which the median drops), not on every repetition of one.
+      std::vector<const BenchConfig*> measured;
+      std::vector<std::vector<double>> times;
+      const size_t first = rows.size();
       for (const BenchConfig& cfg : configs) {
         try {
-          rows.push_back(measure(*pipe, t, backend, cfg, ref, o.repetitions));
-          const BenchRow& r = rows.back();
-          std::fprintf(stderr, "bench: %s %s %-22s %8.4f s/frame %7.2f dB\n", t.label.c_str(),
-                       backend.c_str(), cfg.name.c_str(), r.seconds_per_frame, r.psnr_db);
+          std::vector<double> cfg_times;
+          rows.push_back(measure(*pipe, t, backend, cfg, ref, cfg_times));
+          measured.push_back(&cfg);
+          times.push_back(cfg_times);
+          std::fprintf(stderr, "bench: %s %s %-22s %7.2f dB\n", t.label.c_str(), backend.c_str(),
+                       cfg.name.c_str(), rows.back().psnr_db);
         } catch (const std::exception& e) {
           std::fprintf(stderr, "bench: skipping %s on %s, %s: %s\n", t.label.c_str(),
                        backend.c_str(), cfg.name.c_str(), e.what());
           ++failures;
         }
       }
+      for (int rep = 1; rep < o.repetitions; ++rep) {
+        std::fprintf(stderr, "bench: %s %s timing, repetition %d of %d\n", t.label.c_str(),
+                     backend.c_str(), rep + 1, o.repetitions);
+        for (size_t k = 0; k < measured.size(); ++k)
+          times[k].push_back(time_frames(*pipe, bench_contexts(*pipe, t, *measured[k])));
+      }
+      for (size_t k = 0; k < measured.size(); ++k)
+        rows[first + k].seconds_per_frame = median(times[k]);
     }
   }
   mark_fronts(rows);
