@@ -3,13 +3,14 @@
 // that the timeline, `sdfreel scenes` and the OSMesa backend need. One file per scene registers it
 // in registry.cpp.
 #include <functional>
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
-#include <glm/glm.hpp>
 
 #include "render/frame_context.h"
 #include "render/params.h"
+#include "sdf/lanes.h"
 
 namespace sdfreel {
 
@@ -18,7 +19,11 @@ struct RayStats {
   uint64_t sdf_evals = 0;
   uint64_t steps = 0;
   uint64_t capped = 0;  // rays that hit max_steps
-  void add(const RayStats& o) { sdf_evals += o.sdf_evals; steps += o.steps; capped += o.capped; }
+  void add(const RayStats& o) {
+    sdf_evals += o.sdf_evals;
+    steps += o.steps;
+    capped += o.capped;
+  }
 };
 
 // Per-frame constants a scene hands to its GLSL twin (OSMesa backend): the same numbers that
@@ -32,15 +37,34 @@ struct ShaderUniform {
 // A texture a scene generates (blue noise, sky, paper maps) for its GLSL twin. Shaders should
 // read it with texelFetch and filter in code exactly as the C++ path does.
 struct ShaderTexture {
-  std::string name;           // sampler uniform name
+  std::string name;  // sampler uniform name
   int width = 0, height = 0, channels = 4;
   std::vector<float> texels;  // width * height * channels, row-major, row 0 first
 };
 
 struct Ray {
   glm::vec3 origin;
-  glm::vec3 dir;        // unit length
-  float pixel_angle;    // angular size of one pixel (radians): hit epsilon grows with t * pixel_angle
+  glm::vec3 dir;      // unit length
+  float pixel_angle;  // angular size of one pixel (radians): hit epsilon grows with t * pixel_angle
+};
+
+// Up to LANES primary rays from one eye: the CPU backend's SIMD unit. Lanes >= count are padding
+// (copies of the last ray): inactive, never counted in RayStats, their output ignored.
+struct RayPacket {
+  glm::vec3 origin;
+  V3x8 dir;           // unit length
+  float pixel_angle;  // as in Ray
+  int count = LANES;  // valid lanes, 1..LANES
+  M8 valid() const;   // lane < count
+  Ray ray(int i) const { return Ray{origin, dir.lane(i), pixel_angle}; }
+};
+
+// A distance function of a scene, for micro-benchmarks and lane tests: d[i] at (x[i], y[i], z[i])
+// for i < n (n a multiple of LANES), one point at a time (`scalar`) or eight lanes at a time
+// (`lanes`), with the same bits. Valid after prepare(), for that frame.
+struct DistanceFunction {
+  std::string name;  // the function's name in the scene's code, e.g. "sdfWater"
+  std::function<void(const float*x, const float*y, const float*z, float*d, int n)> scalar, lanes;
 };
 
 class Scene {
@@ -51,17 +75,23 @@ class Scene {
   virtual void prepare(const FrameContext& ctx) = 0;
   // Linear scene-referred radiance (Rec.709 primaries) along one primary ray. Thread-safe (const).
   virtual glm::vec3 radiance(const Ray& ray, RayStats& stats) const = 0;
+  // The same for a packet: out[i] for i < rays.count, bit for bit equal to radiance(rays.ray(i))
+  // and adding the same stats. The default runs radiance() lane by lane; scenes override it with
+  // eight-lane code (sdf/lanes.h).
+  virtual void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const;
   // For the OSMesa backend, after prepare(): the per-frame constants and textures its shader reads.
+  // After prepare(): the distance functions its marches evaluate, scalar and in lanes.
+  virtual std::vector<DistanceFunction> distance_functions() const { return {}; }
   virtual std::vector<ShaderUniform> shader_uniforms() const { return {}; }
   virtual std::vector<ShaderTexture> shader_textures() const { return {}; }
 };
 
 struct SceneInfo {
   std::string name;
-  std::string description;               // one paragraph, printed by `sdfreel scenes NAME`
+  std::string description;  // one paragraph, printed by `sdfreel scenes NAME`
   std::vector<ParamSpec> params;
   CameraPose default_camera;
-  std::string shader;                    // GLSL file under shaders/, for the OSMesa backend
+  std::string shader;  // GLSL file under shaders/, for the OSMesa backend
   std::function<std::unique_ptr<Scene>()> make;
 };
 

@@ -1,22 +1,34 @@
 #pragma once
 // The CPU backend: the scene's C++ code over tiles on all cores, samples summed in fixed order.
+// Rays go to the scene in packets of eight (Scene::radiance_packet, SIMD lanes) or one by one
+// (Scene::radiance, `packets` false or SDFREEL_SIMD=0 in the environment): the same bits.
 #include <memory>
 
 #include "render/backend.h"
+#include "render/tiling.h"
 #include "scenes/scene.h"
 
 namespace sdfreel {
 
 class CpuBackend : public Backend {
  public:
-  CpuBackend(int threads, int tile_size = 16) : threads_(threads), tile_size_(tile_size) {}
+  CpuBackend(int threads, int tile_size = 16, bool packets = packets_by_default())
+      : threads_(threads), tile_size_(tile_size), packets_(packets) {}
+  // True unless the environment says SDFREEL_SIMD=0 (for comparing the two paths).
+  static bool packets_by_default();
   std::string name() const override { return "cpu"; }
   std::map<std::string, std::string> versions() const override;
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
 
  private:
+  void render_tile_packets(const FrameContext& ctx, const Tile& t, float pixel_angle,
+                           ImageRGBA& img, RayStats& stats) const;
+  void render_tile_scalar(const FrameContext& ctx, const Tile& t, float pixel_angle, ImageRGBA& img,
+                          RayStats& stats) const;
+
   int threads_, tile_size_;
+  bool packets_;
   std::unique_ptr<Scene> scene_;
 };
 
