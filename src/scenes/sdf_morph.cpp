@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scenes/scene.h"
+#include "scenes/sdf_morph_lanes.h"
 #include "scenes/sdf_morph_render.h"
 #include "scenes/sdf_morph_uniforms.h"
 
@@ -18,6 +19,12 @@ class SdfMorphScene : public Scene {
   void prepare(const FrameContext& ctx) override { u_ = sdf_morph::make_morph_uniforms(ctx); }
   glm::vec3 radiance(const Ray& ray, RayStats& stats) const override {
     return sdf_morph::sceneRadiance(ray, u_, stats);
+  }
+  void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override {
+    sdf_morph::radiancePacket(rays, u_, out, stats);
+  }
+  std::vector<DistanceFunction> distance_functions() const override {
+    return sdf_morph::morphDistanceFunctions(u_);
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return sdf_morph::morph_shader_uniforms(u_);

@@ -3,10 +3,12 @@
 // metres-ish, +Y up, the floor is y = 0 (handled analytically by the renderer, not in the SDF).
 // Object space has its origin on the pedestal top, under the object's centre.
 #include <glm/glm.hpp>
+#include <utility>
 
 #include "scenes/scene.h"
 #include "scenes/sdf_morph_uniforms.h"
 #include "sdf/det_math.h"
+#include "sdf/lanes.h"
 #include "sdf/sdf.h"
 
 namespace sdfreel::sdf_morph {
@@ -56,33 +58,58 @@ inline glm::vec3 groupBoundCenter() {
   return glm::vec3(0.0f, GROUP_BOUND_Y, 0.0f);
 }
 
+// Scalar (glm::vec3) or eight lanes (V3x8): the distance type and its mask type.
+template <class V>
+using DistanceOf = decltype(vlength(std::declval<V>()));
+template <class V>
+using MaskOf = decltype(DistanceOf<V>() < DistanceOf<V>());
+
+// A mask with every lane set (scalar: true), and a select of masks.
+inline bool allLanes(float) {
+  return true;
+}
+inline M8 allLanes(F8) {
+  return splat_mask(true);
+}
+inline bool selectMask(bool m, bool a, bool b) {
+  return m ? a : b;
+}
+inline M8 selectMask(M8 m, M8 a, M8 b) {
+  return select(m, a, b);
+}
+
+// The geometry below is one source for both paths (templates like sdf/sdf.h): branches on the
+// per-frame uniforms stay plain ifs, branches on the point become selects of both sides.
+
 // World -> object space: onto the pedestal top, then the frame's rotation about +Y.
-inline glm::vec3 toObjectSpace(const glm::vec3& p, const MorphUniforms& u) {
+template <class V>
+inline V toObjectSpace(const V& p, const MorphUniforms& u) {
   return rotateY(p - glm::vec3(0.0f, PEDESTAL_HEIGHT, 0.0f), u.rot_cos, u.rot_sin);
 }
 
-inline float mapTorus(const glm::vec3& q) {
+template <class V>
+inline auto mapTorus(const V& q) {
   // sdTorus lies in xz; swap y and z to stand it up.
-  return sdTorus(glm::vec3(q.x, q.z, q.y - TORUS_CENTER_Y), glm::vec2(TORUS_MAJOR, TORUS_MINOR));
+  return sdTorus(vec3_of(q.x, q.z, q.y - TORUS_CENTER_Y), glm::vec2(TORUS_MAJOR, TORUS_MINOR));
 }
 
-inline float mapMug(const glm::vec3& q) {
-  const glm::vec3 m = q - glm::vec3(0.0f, MUG_HALF_HEIGHT, 0.0f);  // origin at the mug's centre
+template <class V>
+inline auto mapMug(const V& q) {
+  const V m = q - glm::vec3(0.0f, MUG_HALF_HEIGHT, 0.0f);  // origin at the mug's centre
   // The cup: shrink the solid and grow the cavity by the rounding radius, cut one from the
   // other, then grow the result back: a wall of MUG_WALL with rounded rim and edges.
-  const float outer =
-      sdCappedCylinder(m, MUG_HALF_HEIGHT - MUG_ROUNDING, MUG_RADIUS - MUG_ROUNDING);
+  const auto outer = sdCappedCylinder(m, MUG_HALF_HEIGHT - MUG_ROUNDING, MUG_RADIUS - MUG_ROUNDING);
   const float cavity_bottom = -MUG_HALF_HEIGHT + MUG_BOTTOM;
   const float cavity_top = MUG_HALF_HEIGHT + MUG_CAVITY_OVERSHOOT;
-  const glm::vec3 c = m - glm::vec3(0.0f, 0.5f * (cavity_bottom + cavity_top), 0.0f);
-  const float cavity =
+  const V c = m - glm::vec3(0.0f, 0.5f * (cavity_bottom + cavity_top), 0.0f);
+  const auto cavity =
       sdCappedCylinder(c, 0.5f * (cavity_top - cavity_bottom), MUG_RADIUS - MUG_WALL);
-  const float cup = opRound(opSubtraction(cavity - MUG_ROUNDING, outer), MUG_ROUNDING);
+  const auto cup = opRound(opSubtraction(cavity - MUG_ROUNDING, outer), MUG_ROUNDING);
   // The handle: a half ring in the xy plane bulging towards +x (sdCappedTorus opens about +y:
   // swap x and y).
-  const glm::vec3 h = m - glm::vec3(HANDLE_X, HANDLE_Y, 0.0f);
-  const float handle =
-      sdCappedTorus(glm::vec3(h.y, h.x, h.z), glm::vec2(HANDLE_ARC_SIN, HANDLE_ARC_COS),
+  const V h = m - glm::vec3(HANDLE_X, HANDLE_Y, 0.0f);
+  const auto handle =
+      sdCappedTorus(vec3_of(h.y, h.x, h.z), glm::vec2(HANDLE_ARC_SIN, HANDLE_ARC_COS),
                     HANDLE_RADIUS, HANDLE_THICKNESS);
   // Carve the cavity again so the handle's ends do not poke into it.
   return opSubtraction(cavity, opSmoothUnion(cup, handle, HANDLE_BLEND));
@@ -90,14 +117,16 @@ inline float mapMug(const glm::vec3& q) {
 
 // The morph: a per-frame constant blend of two 1-Lipschitz distances is 1-Lipschitz, so plain
 // sphere-tracing steps stay safe at every stage.
-inline float mapObject(const glm::vec3& p, const MorphUniforms& u) {
-  const glm::vec3 q = toObjectSpace(p, u);
+template <class V>
+inline auto mapObject(const V& p, const MorphUniforms& u) {
+  const V q = toObjectSpace(p, u);
   if (u.morph <= 0.0f) return mapTorus(q);
   if (u.morph >= 1.0f) return mapMug(q);
   return dm::mix(mapTorus(q), mapMug(q), u.morph);
 }
 
-inline float mapPedestal(const glm::vec3& p) {
+template <class V>
+inline auto mapPedestal(const V& p) {
   const glm::vec3 c(0.0f, 0.5f * PEDESTAL_HEIGHT, 0.0f);
   return sdRoundBox(p - c,
                     glm::vec3(PEDESTAL_HALF_WIDTH, 0.5f * PEDESTAL_HEIGHT, PEDESTAL_HALF_WIDTH),
@@ -106,21 +135,26 @@ inline float mapPedestal(const glm::vec3& p) {
 
 // Distance to object and pedestal, exact within `margin` of the object's bounding sphere; beyond
 // it the sphere's distance stands in for the object's (a lower bound). `exact` tells which.
-// The naive preset uses no bounding volume: always the exact distance.
-inline float mapSceneBounded(const glm::vec3& p, const MorphUniforms& u, float margin,
-                             bool& exact) {
-  const float pedestal = mapPedestal(p);
+// The naive preset uses no bounding volume: always the exact distance. Lanes where the bound
+// stands in skip the object only when all of them do (the selected bits are the same).
+template <class V, class F>
+inline DistanceOf<V> mapSceneBounded(const V& p, const MorphUniforms& u, F margin,
+                                     MaskOf<V>& exact) {
+  const DistanceOf<V> pedestal = mapPedestal(p);
+  const MaskOf<V> all_exact = allLanes(pedestal);
   if (u.naive) {
-    exact = true;
+    exact = all_exact;
     return opUnion(mapObject(p, u), pedestal);
   }
-  const float bound = glm::length(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
-  if (bound > margin) {
-    exact = pedestal <= bound;
+  const DistanceOf<V> bound = vlength(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
+  const MaskOf<V> far = bound > margin;
+  const MaskOf<V> bound_exact = pedestal <= bound;
+  if (all(far)) {
+    exact = bound_exact;
     return opUnion(bound, pedestal);
   }
-  exact = true;
-  return opUnion(mapObject(p, u), pedestal);
+  exact = selectMask(far, bound_exact, all_exact);
+  return select(far, opUnion(bound, pedestal), opUnion(mapObject(p, u), pedestal));
 }
 
 // Everything that casts shadows and is ray marched: object and pedestal.
@@ -131,9 +165,12 @@ inline float mapScene(const glm::vec3& p, const MorphUniforms& u, RayStats& stat
 }
 
 // At a hit point: is it the object (true) or the pedestal?
-inline bool isObject(const glm::vec3& p, const MorphUniforms& u) {
-  const float bound = glm::length(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
-  const float object = bound > OBJECT_BOUND_MARGIN ? bound : mapObject(p, u);
+template <class V>
+inline MaskOf<V> isObject(const V& p, const MorphUniforms& u) {
+  const DistanceOf<V> bound = vlength(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
+  const MaskOf<V> far = bound > OBJECT_BOUND_MARGIN;
+  DistanceOf<V> object = bound;
+  if (!all(far)) object = select(far, bound, mapObject(p, u));
   return object <= mapPedestal(p);
 }
 

@@ -1,6 +1,8 @@
 #include "scenes/sdf_morph_render.h"
 
+#include "scenes/sdf_morph_environment.h"
 #include "scenes/sdf_morph_geometry.h"
+#include "scenes/sdf_morph_march.h"
 #include "sdf/det_math.h"
 #include "sdf/sdf.h"
 
@@ -9,19 +11,6 @@ namespace {
 
 using glm::vec2;
 using glm::vec3;
-
-// ---- studio look (linear Rec.709) ----
-const vec3 WALL_LOW(0.16f, 0.155f, 0.15f);            // walls near the horizon
-const vec3 WALL_HIGH(0.03f, 0.032f, 0.036f);          // towards the ceiling
-const vec3 FLOOR_FAR(0.085f, 0.08f, 0.075f);          // below the horizon
-constexpr float WALL_GRADIENT_TOP = 0.6f;             // d.y where the wall reaches WALL_HIGH
-constexpr float HORIZON_SOFTNESS = 0.04f;             // d.y half width of the floor/wall transition
-const vec3 BACKDROP_DIR(0.0f, 0.148340f, 0.988936f);  // light pool on the wall behind the object
-const vec3 BACKDROP_GLOW(0.22f, 0.21f, 0.19f);        // falls off as cos^6 from BACKDROP_DIR
-constexpr float SOFTBOX_MIN_COS = 0.05f;      // boxes are invisible beyond ~87 degrees off-axis
-constexpr float SOFTBOX_EDGE = 0.02f;         // soft edge width on the unit-distance plane
-constexpr float SOFTBOX_GLOW = 0.04f;         // faint halo around each box (diffuser spill)
-constexpr float SOFTBOX_GLOW_FALLOFF = 8.0f;  // halo: 1 / (1 + (falloff * distance)^2)
 
 const vec3 KEY_COLOR(1.0f, 0.96f, 0.9f);
 const vec3 AMBIENT_SKY(0.22f, 0.22f, 0.24f);
@@ -32,50 +21,6 @@ constexpr float PEDESTAL_F0 = 0.03f;  // satin stone: a faint Fresnel reflection
 const vec3 FLOOR_ALBEDO(0.2f, 0.19f, 0.18f);
 constexpr float FLOOR_FADE_START = 5.0f;  // horizontal distance where the floor starts to fade
 constexpr float FLOOR_FADE_END = 20.0f;   // ... into the backdrop (a cyclorama with no seam)
-
-// ---- marching ----
-constexpr float MIN_HIT_EPS = 1e-5f;
-constexpr float MIN_NORMAL_EPS = 1e-4f;
-constexpr float SURFACE_BIAS_FACTOR = 2.0f;  // secondary rays start this many hit eps off
-constexpr float MIN_SURFACE_BIAS = 2e-3f;
-constexpr float NO_HIT = -1.0f;
-constexpr float MISS_SPAN = 1e30f;
-// MarchSettings::hit_mask output: which marched surface the primary ray hit.
-constexpr float HIT_ID_NONE = 0.0f;
-constexpr float HIT_ID_OBJECT = 1.0f;
-constexpr float HIT_ID_PEDESTAL = 2.0f;
-
-constexpr float SHADOW_TMIN = 0.01f;
-constexpr float SHADOW_HIT_EPS = 1e-3f;
-constexpr float SHADOW_FIRST_PH = 1e10f;  // "previous h" before the first step: no estimate yet
-constexpr float SHADOW_MIN_DENOM = 1e-6f;
-
-constexpr int AO_TAPS = 5;
-constexpr float AO_START = 0.01f;
-constexpr float AO_SPAN = 0.12f;
-constexpr float AO_FALLOFF = 0.95f;
-constexpr float AO_STRENGTH = 3.0f;
-constexpr float AO_REACH = AO_START + AO_SPAN;
-
-// (t_enter, t_exit) of the ray with a sphere; (MISS_SPAN, -MISS_SPAN) when it misses. The
-// discriminant is r^2 - (distance of the centre from the ray)^2, not b^2 - c, which would cancel
-// catastrophically for a camera far away (tests/hard_cases/far_camera_object).
-vec2 intersectSphere(const vec3& ro, const vec3& rd, const vec3& center, float radius) {
-  const vec3 oc = ro - center;
-  const float b = glm::dot(oc, rd);
-  const vec3 q = oc - b * rd;
-  const float disc = radius * radius - glm::dot(q, q);
-  if (disc < 0.0f) return vec2(MISS_SPAN, -MISS_SPAN);
-  const float s = dm::sqrt(disc);
-  return vec2(-b - s, -b + s);
-}
-
-// Distance to the floor plane y = 0 along the ray, or NO_HIT.
-float intersectFloor(const vec3& ro, const vec3& rd) {
-  if (rd.y == 0.0f) return NO_HIT;
-  const float t = -ro.y / rd.y;
-  return t > 0.0f ? t : NO_HIT;
-}
 
 // Sphere tracing of mapScene from tmin to tmax with over-relaxation (Keinert et al. 2014): steps
 // of step_factor * d, and when the unbounding spheres of two steps stop overlapping, one step
@@ -119,54 +64,10 @@ float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_step
   return t;
 }
 
-float hitEps(float eps_per_t, float t, const MorphUniforms& u) {
-  return u.naive ? u.hit_eps : dm::max(MIN_HIT_EPS, eps_per_t * t);
-}
-float normalEps(float pixel_angle, float t, const MorphUniforms& u) {
-  return u.naive ? u.normal_eps : dm::max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * t);
-}
-// The part of a ray worth marching: inside the sphere around object and pedestal, or (naive
-// preset, no bounding volumes) everything up to max_dist.
-vec2 groupSpan(const vec3& ro, const vec3& rd, const MorphUniforms& u) {
-  if (u.naive) return vec2(0.0f, u.max_dist);
-  return intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
-}
-float surfaceBias(float eps) {
-  return dm::max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps);
-}
-
-vec3 reflectDir(const vec3& d, const vec3& n) {
-  return d - 2.0f * glm::dot(n, d) * n;
-}
-
 float schlick(float cos_theta, float f0) {
   const float x = 1.0f - dm::clamp(cos_theta, 0.0f, 1.0f);
   const float x2 = x * x;
   return f0 + (1.0f - f0) * (x2 * x2 * x);
-}
-
-vec3 softBox(const vec3& d, const SoftBox& box) {
-  const float c = glm::dot(d, box.dir);
-  if (c <= SOFTBOX_MIN_COS) return vec3(0.0f);
-  const vec2 uv = vec2(glm::dot(d, box.u), glm::dot(d, box.v)) / c;
-  const float sd = sdRoundRect(uv, box.half_size, box.corner);
-  const float core = 1.0f - dm::smoothstep(-SOFTBOX_EDGE, SOFTBOX_EDGE, sd);
-  const float g = SOFTBOX_GLOW_FALLOFF * dm::max(sd, 0.0f);
-  const float glow = SOFTBOX_GLOW / (1.0f + g * g);
-  return box.radiance * (core + glow);
-}
-
-// IQ's 5-tap ambient occlusion along the normal.
-float ambientOcclusion(const vec3& p, const vec3& n, const MorphUniforms& u, RayStats& stats) {
-  float occ = 0.0f;
-  float scale = 1.0f;
-  for (int i = 0; i < AO_TAPS; ++i) {
-    const float h = AO_START + AO_SPAN * float(i) / float(AO_TAPS - 1);
-    const float d = mapScene(p + n * h, u, stats);
-    occ += (h - d) * scale;
-    scale *= AO_FALLOFF;
-  }
-  return dm::clamp(1.0f - AO_STRENGTH * occ, 0.0f, 1.0f);
 }
 
 vec3 ambientLight(const vec3& n, const MorphUniforms& u) {
@@ -187,76 +88,130 @@ void occlusion(const vec3& p, const vec3& n, float bias, bool full, const MorphU
   shadow = 1.0f;
   ao = 1.0f;
   if (!full) return;
-  if (glm::dot(n, u.boxes[0].dir) > 0.0f)
-    shadow = softShadow(p + n * bias, u.boxes[0].dir, u, stats);
-  if (u.naive || glm::length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH)
-    ao = ambientOcclusion(p, n, u, stats);
+  if (needsShadow(n, u)) shadow = softShadow(p + n * bias, u.boxes[0].dir, u, stats);
+  if (needsOcclusion(p, u)) ao = ambientOcclusion(p, n, u, stats);
 }
 
 vec3 shadeFloor(const vec3& p, const vec3& rd, float bias, bool full, const MorphUniforms& u,
                 RayStats& stats) {
-  const vec3 n(0.0f, 1.0f, 0.0f);
   float shadow, ao;
-  occlusion(p, n, bias, full, u, stats, shadow, ao);
-  const vec3 col = diffuseLight(FLOOR_ALBEDO, n, shadow, ao, u);
-  const float fade = dm::smoothstep(FLOOR_FADE_START, FLOOR_FADE_END, glm::length(vec2(p.x, p.z)));
-  return dm::mix(col, environment(rd, u), fade);
+  occlusion(p, vec3(0.0f, 1.0f, 0.0f), bias, full, u, stats, shadow, ao);
+  return shadeFloorLit(p, shadow, ao, environment(rd, u), u);
 }
 
 vec3 shadePedestal(const vec3& p, const vec3& n, const vec3& rd, float bias, bool full,
                    const MorphUniforms& u, RayStats& stats) {
   float shadow, ao;
   occlusion(p, n, bias, full, u, stats, shadow, ao);
-  const vec3 diffuse = diffuseLight(PEDESTAL_ALBEDO, n, shadow, ao, u);
-  const float f = schlick(glm::dot(n, -rd), PEDESTAL_F0);
-  return dm::mix(diffuse, environment(reflectDir(rd, n), u) * ao, f);
+  return shadePedestalLit(n, rd, shadow, ao, environment(reflectDir(rd, n), u), u);
 }
 
-// The object: coloured diffuse base mixed with the mirror reflection by Schlick's Fresnel term.
 vec3 shadeObject(const vec3& p, const vec3& n, const vec3& rd, const vec3& reflection, float bias,
                  bool full, const MorphUniforms& u, RayStats& stats) {
   float shadow, ao;
   occlusion(p, n, bias, full, u, stats, shadow, ao);
-  const vec3 diffuse = diffuseLight(u.base_color, n, shadow, ao, u);
-  const float f = schlick(glm::dot(n, -rd), u.reflectivity);
-  return dm::mix(diffuse, reflection, f);
+  return shadeObjectLit(n, rd, reflection, shadow, ao, u);
 }
 
 // What the mirror sees from p along r: the pedestal, the object itself (e.g. the mug's inside),
 // the floor, or the studio. Surfaces found here are shaded without further bounces or shadows.
 vec3 traceReflection(const vec3& p, const vec3& n, const vec3& r, float t_before, float eps_per_t,
                      float pixel_angle, const MorphUniforms& u, RayStats& stats) {
-  const vec3 ro = p + n * surfaceBias(hitEps(eps_per_t, t_before, u));
-  const float t_floor = intersectFloor(ro, r);
-  const float tmax = t_floor > 0.0f ? dm::min(t_floor, u.max_dist) : u.max_dist;
-  const vec2 span = groupSpan(ro, r, u);
-  const float t0 = dm::max(span.x, 0.0f), t1 = dm::min(span.y, tmax);
-  if (t0 < t1) {
-    const float t = march(ro, r, t0, t1, u.reflect_steps, eps_per_t, t_before, u, stats);
+  const ReflectionSpan span = reflectionSpan(p, n, r, t_before, eps_per_t, u);
+  if (span.t0 < span.t1) {
+    const float t =
+        march(span.ro, r, span.t0, span.t1, u.reflect_steps, eps_per_t, t_before, u, stats);
     if (t != NO_HIT) {
-      const vec3 q = ro + r * t;
+      const vec3 q = span.ro + r * t;
       const float e = normalEps(pixel_angle, t_before + t, u);
       const vec3 nq = calcNormal(q, e, u, stats);
-      if (isObject(q, u))
-        return shadeObject(q, nq, r, environment(reflectDir(r, nq), u), 0.0f, false, u, stats);
-      return shadePedestal(q, nq, r, 0.0f, false, u, stats);
+      return shadeReflectionHit(nq, r, isObject(q, u), environment(reflectDir(r, nq), u), u);
     }
   }
-  if (t_floor > 0.0f && t_floor < u.max_dist)
-    return shadeFloor(ro + r * t_floor, r, 0.0f, false, u, stats);
-  return environment(r, u);
+  return shadeReflectionMiss(span, r, environment(r, u), u);
 }
 
 }  // namespace
 
+// IQ's 5-tap ambient occlusion along the normal.
+float ambientOcclusion(const vec3& p, const vec3& n, const MorphUniforms& u, RayStats& stats) {
+  float occ = 0.0f;
+  float scale = 1.0f;
+  for (int i = 0; i < AO_TAPS; ++i) {
+    const float h = aoTapHeight(i);
+    const float d = mapScene(p + n * h, u, stats);
+    occ += (h - d) * scale;
+    scale *= AO_FALLOFF;
+  }
+  return aoFromSum(occ);
+}
+
+float aoFromSum(float occ) {
+  return dm::clamp(1.0f - AO_STRENGTH * occ, 0.0f, 1.0f);
+}
+
+vec3 shadeFloorLit(const vec3& p, float shadow, float ao, const vec3& env_rd,
+                   const MorphUniforms& u) {
+  const vec3 n(0.0f, 1.0f, 0.0f);
+  const vec3 col = diffuseLight(FLOOR_ALBEDO, n, shadow, ao, u);
+  const float fade = dm::smoothstep(FLOOR_FADE_START, FLOOR_FADE_END, glm::length(vec2(p.x, p.z)));
+  return dm::mix(col, env_rd, fade);
+}
+
+vec3 shadePedestalLit(const vec3& n, const vec3& rd, float shadow, float ao, const vec3& env_mirror,
+                      const MorphUniforms& u) {
+  const vec3 diffuse = diffuseLight(PEDESTAL_ALBEDO, n, shadow, ao, u);
+  const float f = schlick(glm::dot(n, -rd), PEDESTAL_F0);
+  return dm::mix(diffuse, env_mirror * ao, f);
+}
+
+// The object: coloured diffuse base mixed with the mirror reflection by Schlick's Fresnel term.
+vec3 shadeObjectLit(const vec3& n, const vec3& rd, const vec3& reflection, float shadow, float ao,
+                    const MorphUniforms& u) {
+  const vec3 diffuse = diffuseLight(u.base_color, n, shadow, ao, u);
+  const float f = schlick(glm::dot(n, -rd), u.reflectivity);
+  return dm::mix(diffuse, reflection, f);
+}
+
+PrimarySpan primarySpan(const Ray& ray, const MorphUniforms& u) {
+  PrimarySpan s;
+  s.eps_per_t = u.hit_eps * ray.pixel_angle;
+  s.t_floor = intersectFloor(ray.origin, ray.dir);
+  s.floor_visible = s.t_floor > 0.0f && s.t_floor < u.max_dist;
+  const float tmax = s.floor_visible ? s.t_floor : u.max_dist;
+  const vec2 span = groupSpan(ray.origin, ray.dir, u);
+  s.t0 = dm::max(span.x, 0.0f);
+  s.t1 = dm::min(span.y, tmax);
+  return s;
+}
+
+ReflectionSpan reflectionSpan(const vec3& p, const vec3& n, const vec3& r, float t_before,
+                              float eps_per_t, const MorphUniforms& u) {
+  ReflectionSpan s;
+  s.ro = p + n * surfaceBias(hitEps(eps_per_t, t_before, u));
+  s.t_floor = intersectFloor(s.ro, r);
+  const float tmax = s.t_floor > 0.0f ? dm::min(s.t_floor, u.max_dist) : u.max_dist;
+  const vec2 span = groupSpan(s.ro, r, u);
+  s.t0 = dm::max(span.x, 0.0f);
+  s.t1 = dm::min(span.y, tmax);
+  return s;
+}
+
+vec3 shadeReflectionHit(const vec3& nq, const vec3& r, bool object, const vec3& env_mirror,
+                        const MorphUniforms& u) {
+  if (object) return shadeObjectLit(nq, r, env_mirror, 1.0f, 1.0f, u);
+  return shadePedestalLit(nq, r, 1.0f, 1.0f, env_mirror, u);
+}
+
+vec3 shadeReflectionMiss(const ReflectionSpan& span, const vec3& r, const vec3& env_r,
+                         const MorphUniforms& u) {
+  if (span.t_floor > 0.0f && span.t_floor < u.max_dist)
+    return shadeFloorLit(span.ro + r * span.t_floor, 1.0f, 1.0f, env_r, u);
+  return env_r;
+}
+
 vec3 environment(const vec3& d, const MorphUniforms& u) {
-  const vec3 wall = dm::mix(WALL_LOW, WALL_HIGH, dm::smoothstep(0.0f, WALL_GRADIENT_TOP, d.y));
-  vec3 col = dm::mix(FLOOR_FAR, wall, dm::smoothstep(-HORIZON_SOFTNESS, HORIZON_SOFTNESS, d.y));
-  const float b = dm::max(glm::dot(d, BACKDROP_DIR), 0.0f);
-  const float b2 = b * b;
-  col += BACKDROP_GLOW * (b2 * b2 * b2);
-  for (int i = 0; i < SOFTBOX_COUNT; ++i) col += softBox(d, u.boxes[i]);
-  return u.env_intensity * col;
+  return studio(d, u);
 }
 
 float softShadow(const vec3& ro, const vec3& rd, const MorphUniforms& u, RayStats& stats) {
@@ -301,32 +256,27 @@ vec3 calcNormal(const vec3& p, float e, const MorphUniforms& u, RayStats& stats)
 
 vec3 sceneRadiance(const Ray& ray, const MorphUniforms& u, RayStats& stats) {
   const vec3 ro = ray.origin, rd = ray.dir;
-  const float eps_per_t = u.hit_eps * ray.pixel_angle;
-  const float t_floor = intersectFloor(ro, rd);
-  const bool floor_visible = t_floor > 0.0f && t_floor < u.max_dist;
-  const float tmax = floor_visible ? t_floor : u.max_dist;
-  const vec2 span = groupSpan(ro, rd, u);
-  const float t0 = dm::max(span.x, 0.0f), t1 = dm::min(span.y, tmax);
-  if (t0 < t1) {
-    const float t = march(ro, rd, t0, t1, u.max_steps, eps_per_t, 0.0f, u, stats);
+  const PrimarySpan s = primarySpan(ray, u);
+  if (s.t0 < s.t1) {
+    const float t = march(ro, rd, s.t0, s.t1, u.max_steps, s.eps_per_t, 0.0f, u, stats);
     if (t != NO_HIT) {
       const vec3 p = ro + rd * t;
       if (u.hit_mask) return vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL);
       const float e = normalEps(ray.pixel_angle, t, u);
       const vec3 n = calcNormal(p, e, u, stats);
-      const float bias = surfaceBias(hitEps(eps_per_t, t, u));
+      const float bias = surfaceBias(hitEps(s.eps_per_t, t, u));
       if (isObject(p, u)) {
         const vec3 refl =
-            traceReflection(p, n, reflectDir(rd, n), t, eps_per_t, ray.pixel_angle, u, stats);
+            traceReflection(p, n, reflectDir(rd, n), t, s.eps_per_t, ray.pixel_angle, u, stats);
         return shadeObject(p, n, rd, refl, bias, true, u, stats);
       }
       return shadePedestal(p, n, rd, bias, true, u, stats);
     }
   }
   if (u.hit_mask) return vec3(HIT_ID_NONE);  // the floor is a plane, not marched
-  if (floor_visible) {
-    const float bias = surfaceBias(hitEps(eps_per_t, t_floor, u));
-    return shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats);
+  if (s.floor_visible) {
+    const float bias = surfaceBias(hitEps(s.eps_per_t, s.t_floor, u));
+    return shadeFloor(ro + rd * s.t_floor, rd, bias, true, u, stats);
   }
   return environment(rd, u);
 }
