@@ -119,29 +119,39 @@ CellHit LanternFestivalScene::marchLanterns(const glm::vec3& o, const glm::vec3&
 }
 
 // t_total: distance from the eye (sets the normal's footprint).
+glm::vec3 LanternFestivalScene::lanternHitNormal(const glm::vec3& o, const glm::vec3& dir,
+                                                 const CellHit& hit, float t_total,
+                                                 float pixel_angle) const {
+  return lanternNormal(field_.grid, hit.cell, o + dir * hit.t, normalEps(t_total, pixel_angle));
+}
+
 glm::vec3 LanternFestivalScene::shadeLanternHit(const glm::vec3& o, const glm::vec3& dir,
-                                                const CellHit& hit, float t_total,
-                                                float pixel_angle) const {
+                                                const CellHit& hit, const glm::vec3& n) const {
   const glm::vec3 p = o + dir * hit.t;
-  const float eps = normalEps(t_total, pixel_angle);
   LanternHit h;
   h.p = p;
-  h.n = lanternNormal(field_.grid, hit.cell, p, eps);
+  h.n = n;
   h.view = -dir;
   h.local = toLocal(hit.cell, p - hit.cell.center) * field_.grid.inv_scale;
   h.cell = hit.cell;
   return shadeLantern(light_, field_.grid, h);
 }
 
-glm::vec3 LanternFestivalScene::shadeWater(const glm::vec3& p, const glm::vec3& dir, float t,
-                                           float pixel_angle, RayStats& stats) const {
-  const float eps = normalEps(t, pixel_angle);
-  const glm::vec3 normal = waterNormal(field_.lake, p, eps);
-  const glm::vec3 r = dir - normal * (2.0f * glm::dot(normal, dir));  // reflect(dir, normal)
-  const MarchLimits lim = limits(march_.reflect_steps, pixel_angle, t);
-  const CellHit hit = marchLanterns(p, r, march_.max_dist, lim, stats);
+WaterBounce LanternFestivalScene::bounceOffWater(const Ray& ray, float t, RayStats& stats) const {
+  WaterBounce b;
+  b.p = ray.origin + ray.dir * t;
+  const float eps = normalEps(t, ray.pixel_angle);
+  const glm::vec3 normal = waterNormal(field_.lake, b.p, eps);
+  b.r = ray.dir - normal * (2.0f * glm::dot(normal, ray.dir));  // reflect(dir, normal)
+  const MarchLimits lim = limits(march_.reflect_steps, ray.pixel_angle, t);
+  b.hit = marchLanterns(b.p, b.r, march_.max_dist, lim, stats);
+  if (b.hit.hit) b.n = lanternHitNormal(b.p, b.r, b.hit, t + b.hit.t, ray.pixel_angle);
+  return b;
+}
+
+glm::vec3 LanternFestivalScene::shadeWater(const WaterBounce& b) const {
   const glm::vec3 reflected =
-      hit.hit ? shadeLanternHit(p, r, hit, t + hit.t, pixel_angle) : skyReflected(sky_, r);
+      b.hit.hit ? shadeLanternHit(b.p, b.r, b.hit, b.n) : skyReflected(sky_, b.r);
   return reflected * reflection_strength_ + water_color_;
 }
 
@@ -154,6 +164,8 @@ void LanternFestivalScene::marchPrimaryNaive(const Ray& ray, MarchHit& water, Ce
   lantern = CellHit{h.hit && !h.water, h.t, h.cell};
 }
 
+// The phases (march, water bounce, shading) are shared with radiance_packet, which runs the first
+// two in lanes (lantern_festival_packet.cpp).
 glm::vec3 LanternFestivalScene::radiance(const Ray& ray, RayStats& stats) const {
   MarchHit water;
   CellHit lantern;
@@ -165,15 +177,25 @@ glm::vec3 LanternFestivalScene::radiance(const Ray& ray, RayStats& stats) const 
     const float t_far = water.hit ? water.t : march_.max_dist;
     lantern = marchLanterns(ray.origin, ray.dir, t_far, lim, stats);
   }
-  if (march_.hit_mask)
-    return glm::vec3(lantern.hit ? HIT_ID_LANTERN : water.hit ? HIT_ID_WATER : HIT_ID_NONE);
+  if (march_.hit_mask) return hitMask(water, lantern);
+  const glm::vec3 normal =
+      lantern.hit ? lanternHitNormal(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle)
+                  : glm::vec3(0.0f);
+  WaterBounce bounce;
+  if (seesWater(water, lantern)) bounce = bounceOffWater(ray, water.t, stats);
+  return shadeHits(ray, water, lantern, normal, bounce);
+}
+
+glm::vec3 LanternFestivalScene::hitMask(const MarchHit& water, const CellHit& lantern) const {
+  return glm::vec3(lantern.hit ? HIT_ID_LANTERN : water.hit ? HIT_ID_WATER : HIT_ID_NONE);
+}
+
+glm::vec3 LanternFestivalScene::shadeHits(const Ray& ray, const MarchHit& water,
+                                          const CellHit& lantern, const glm::vec3& lantern_normal,
+                                          const WaterBounce& bounce) const {
   if (lantern.hit)
-    return applyFog(shadeLanternHit(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle),
-                    lantern.t);
-  if (water.hit) {
-    const glm::vec3 p = ray.origin + ray.dir * water.t;
-    return applyFog(shadeWater(p, ray.dir, water.t, ray.pixel_angle, stats), water.t);
-  }
+    return applyFog(shadeLanternHit(ray.origin, ray.dir, lantern, lantern_normal), lantern.t);
+  if (water.hit) return applyFog(shadeWater(bounce), water.t);
   return sky(sky_, ray.dir);
 }
 

@@ -69,29 +69,6 @@ void CellTable::build(const GridFrame& g, const LakeFrame& lake, const glm::vec2
           lanternCellAt(g, lake, glm::vec2(x0_ + float(x), z0_ + float(z)));
 }
 
-float nearestFour(const LanternField& f, const glm::vec3& p3, bool exact) {
-  const GridFrame& g = f.grid;
-  const glm::vec2 p(p3.x, p3.z);
-  const glm::vec2 id = cellId(g, p);
-  // Neighbour offset direction: towards the nearer border in x and in z.
-  const glm::vec2 o(neighbourSign(p.x - g.size * id.x), neighbourSign(p.y - g.size * id.y));
-  float d = 1e20f;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const glm::vec2 rid = id + glm::vec2(float(i), float(j)) * o;
-      d = dm::min(d, lanternDistance(g, f.cell(rid), p3, exact));
-    }
-  return d;
-}
-
-float othersBound(const GridFrame& g, const glm::vec3& p3) {
-  const glm::vec2 p(p3.x, p3.z);
-  const glm::vec2 rel = p - g.size * cellId(g, p);
-  // Every unchecked cell lies behind p (against o) or two cells ahead; its lantern keeps within
-  // `extent` of its grid point, so it is at least |rel| + size - extent away along that axis.
-  return dm::min(dm::abs(rel.x), dm::abs(rel.y)) + g.size - g.extent;
-}
-
 NearestLantern nearestLantern(const LanternField& f, const glm::vec3& p3) {
   const GridFrame& g = f.grid;
   const glm::vec2 p(p3.x, p3.z);

@@ -57,9 +57,20 @@ inline glm::vec2 offset(const GridFrame& g, const glm::vec2& bn) {
 
 LanternCell lanternCellAt(const GridFrame& g, const LakeFrame& lake, const glm::vec2& id);
 
-inline glm::vec3 toLocal(const LanternCell& c, const glm::vec3& d) {
-  return glm::vec3(glm::dot(c.to_local[0], d), glm::dot(c.to_local[1], d),
-                   glm::dot(c.to_local[2], d));
+// Eight lanes' cells (each lane may be in another cell): the lane twin of LanternCell.
+struct LanternCell8 {
+  V3x8 center;
+  V3x8 to_local[3];
+  void set_lane(int i, const LanternCell& c) {
+    center.set_lane(i, c.center);
+    for (int r = 0; r < 3; ++r) to_local[r].set_lane(i, c.to_local[r]);
+  }
+};
+
+// Templates over the cell and point types (LanternCell and glm::vec3, or LanternCell8 and V3x8).
+template <class Cell, class V>
+inline V toLocal(const Cell& c, const V& d) {
+  return vec3_of(vdot(c.to_local[0], d), vdot(c.to_local[1], d), vdot(c.to_local[2], d));
 }
 inline glm::vec3 toWorld(const LanternCell& c, const glm::vec3& v) {
   return c.to_local[0] * v.x + c.to_local[1] * v.y + c.to_local[2] * v.z;
@@ -91,20 +102,22 @@ struct LanternField {
 };
 
 // The seed's round(): floor(x + 0.5), since GLSL leaves round(0.5) to the implementation.
-inline glm::vec2 cellId(const GridFrame& g, const glm::vec2& p) {
-  return glm::vec2(dm::floor(p.x / g.size + 0.5f), dm::floor(p.y / g.size + 0.5f));
+template <class V2>
+inline V2 cellId(const GridFrame& g, const V2& p) {
+  return vec2_of(dm::floor(p.x / g.size + 0.5f), dm::floor(p.y / g.size + 0.5f));
 }
 
 // One lantern's distance. Far from its bounding cylinder the cylinder's distance stands in (a
 // lower bound, since the lantern is inside); `exact` turns that off (tests, normals).
-inline float lanternDistance(const GridFrame& g, const LanternCell& c, const glm::vec3& p,
-                             bool exact) {
-  const glm::vec3 d = p - c.center;
-  if (!exact) {
-    const float bound = sdCappedCylinder(d, g.bound_half_height, g.bound_radius);
-    if (bound > g.early_out) return bound;
-  }
-  return sdfLantern(toLocal(c, d) * g.inv_scale) * g.scale;
+// In lanes the bound is taken per lane (select); the lanes skip the lantern only when all can.
+template <class Cell, class V>
+inline auto lanternDistance(const GridFrame& g, const Cell& c, const V& p, bool exact) {
+  const V d = p - c.center;
+  if (exact) return sdfLantern(toLocal(c, d) * g.inv_scale) * g.scale;
+  const auto bound = sdCappedCylinder(d, g.bound_half_height, g.bound_radius);
+  const auto far = bound > g.early_out;
+  if (all(far)) return bound;
+  return select(far, bound, sdfLantern(toLocal(c, d) * g.inv_scale) * g.scale);
 }
 
 // The 2 x 2 neighbour order (tests/hard_cases/cell_centre_rays): sign() with sign(0) = +1, so that
@@ -113,13 +126,49 @@ inline float lanternDistance(const GridFrame& g, const LanternCell& c, const glm
 inline float neighbourSign(float x) {
   return x < 0.0f ? -1.0f : 1.0f;
 }
+inline F8 neighbourSign(F8 x) {
+  return select(x < 0.0f, splat(-1.0f), splat(1.0f));
+}
 
-// The seed's loop: the lanterns of the 2 x 2 cells nearest to p.
-float nearestFour(const LanternField& f, const glm::vec3& p3, bool exact);
+// The cell of `id`, one lane at a time for lanes (each lane looks its own cell up).
+inline LanternCell cellAt(const LanternField& f, const glm::vec2& id) {
+  return f.cell(id);
+}
+inline LanternCell8 cellAt(const LanternField& f, const V2x8& id) {
+  LanternCell8 c;
+  for (int i = 0; i < LANES; ++i) c.set_lane(i, f.cell(glm::vec2(id.x[i], id.y[i])));
+  return c;
+}
+
+// The seed's loop: the lanterns of the 2 x 2 cells nearest to p (glm::vec3 or V3x8).
+template <class V>
+inline auto nearestFour(const LanternField& f, const V& p3, bool exact) {
+  const GridFrame& g = f.grid;
+  const auto p = vec2_of(p3.x, p3.z);
+  const auto id = cellId(g, p);
+  // Neighbour offset direction: towards the nearer border in x and in z.
+  const auto o = vec2_of(neighbourSign(p.x - g.size * id.x), neighbourSign(p.y - g.size * id.y));
+  auto d = decltype(p3.x){} + 1e20f;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const auto rid = vec2_of(id.x + float(i) * o.x, id.y + float(j) * o.y);
+      d = dm::min(d, lanternDistance(g, cellAt(f, rid), p3, exact));
+    }
+  return d;
+}
 // Lower bound of the distance to the lanterns of every other cell.
-float othersBound(const GridFrame& g, const glm::vec3& p3);
+template <class V>
+inline auto othersBound(const GridFrame& g, const V& p3) {
+  const auto p = vec2_of(p3.x, p3.z);
+  const auto id = cellId(g, p);
+  const auto rel = vec2_of(p.x - g.size * id.x, p.y - g.size * id.y);
+  // Every unchecked cell lies behind p (against o) or two cells ahead; its lantern keeps within
+  // `extent` of its grid point, so it is at least |rel| + size - extent away along that axis.
+  return dm::min(dm::abs(rel.x), dm::abs(rel.y)) + g.size - g.extent;
+}
 // The lantern field: min(nearestFour, othersBound), a distance bound with no gaps or jumps.
-inline float repeated(const LanternField& f, const glm::vec3& p3, bool exact = false) {
+template <class V>
+inline auto repeated(const LanternField& f, const V& p3, bool exact = false) {
   return dm::min(nearestFour(f, p3, exact), othersBound(f.grid, p3));
 }
 

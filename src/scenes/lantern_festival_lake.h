@@ -43,10 +43,13 @@ struct LakeFrame {
 // second.
 LakeFrame make_lake_frame(double time, float amplitude, float speed);
 
-inline float waterHeightAt(const LakeFrame& k, const glm::vec2& p) {
-  float displacement = 0.0f;
+// Templates over the point type (glm::vec2/vec3 or V2x8/V3x8): one source for scalar and lanes.
+// vdot(p, dir) has glm::dot(dir, p)'s bits (products commute).
+template <class V2>
+inline auto waterHeightAt(const LakeFrame& k, const V2& p) {
+  auto displacement = decltype(p.x){};  // +0, in every lane
   for (int i = 0; i < WAVE_COUNT; ++i)
-    displacement += k.amp[i] * dm::sin(glm::dot(k.dir[i], p) * k.freq[i] + k.phase[i]);
+    displacement = displacement + k.amp[i] * dm::sin(vdot(p, k.dir[i]) * k.freq[i] + k.phase[i]);
   return displacement;
 }
 
@@ -73,9 +76,10 @@ inline glm::vec3 normalWaterRough(const LakeFrame& k, const glm::vec2& p) {
 
 // Vertical gap above the water surface: the seed's sdPlane(p, (0,1,0), 1) + waterHeightAt(p.xz).
 // Not a true distance: |grad| <= 1 / step_scale, so marchers scale it (see lantern_festival_march).
-inline float sdfWater(const LakeFrame& k, const glm::vec3& p) {
+template <class V>
+inline auto sdfWater(const LakeFrame& k, const V& p) {
   return sdPlane(p, glm::vec3(0.0f, 1.0f, 0.0f), WATER_PLANE_OFFSET) +
-         waterHeightAt(k, glm::vec2(p.x, p.z));
+         waterHeightAt(k, vec2_of(p.x, p.z));
 }
 
 // Water surface height (world y) at p: where sdfWater is 0.

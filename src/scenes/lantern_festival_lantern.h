@@ -9,17 +9,22 @@
 
 namespace sdfreel::lantern {
 
+// The part functions are templates over the point type (glm::vec3 or V3x8, like sdf/sdf.h): one
+// source for the scalar path and the eight-lane path, with the same bits.
+
 // Box minus the onion (0.03 shell) of a capped cylinder: the box (y from 1 to 5) cuts the top cap
 // off.
-inline float sdfPaper(glm::vec3 p) {
-  p -= glm::vec3(0.0f, -1.0f, 0.0f);
-  const float box = sdBox(p - glm::vec3(0.0f, 4.0f, 0.0f), glm::vec3(2.0f));
-  const float cylinder = sdCappedCylinder(p - glm::vec3(0.0f, 1.5f, 0.0f), 1.5f, 0.75f);
-  const float cylinder_boundary = opOnion(cylinder, 0.03f);
+template <class V>
+inline auto sdfPaper(V p) {
+  p = p - glm::vec3(0.0f, -1.0f, 0.0f);
+  const auto box = sdBox(p - glm::vec3(0.0f, 4.0f, 0.0f), glm::vec3(2.0f));
+  const auto cylinder = sdCappedCylinder(p - glm::vec3(0.0f, 1.5f, 0.0f), 1.5f, 0.75f);
+  const auto cylinder_boundary = opOnion(cylinder, 0.03f);
   return opSubtraction(box, cylinder_boundary);
 }
 
-inline float sdfWood(glm::vec3 p) {
+template <class V>
+inline auto sdfWood(V p) {
   p.y += 1.0f;
   return sdBox(p, glm::vec3(1.1f, 0.04f, 1.1f));
 }
@@ -27,17 +32,19 @@ inline float sdfWood(glm::vec3 p) {
 // 0.75 * 0.707: the struts stand on the rings' diagonals.
 constexpr float STRUT_OFFSET = 0.75f * 0.707f;
 
-inline float sdfMetal(glm::vec3 p) {
-  p -= glm::vec3(0.0f, -1.0f, 0.0f);
-  const float torus1 = sdTorus(p + glm::vec3(0.0f, -0.08f, 0.0f), glm::vec2(0.75f, 0.05f));
-  const float torus2 = sdTorus(p + glm::vec3(0.0f, -2.0f, 0.0f), glm::vec2(0.75f, 0.05f));
-  const float tori = opUnion(torus1, torus2);
-  const float cylindri = sdCappedCylinderOffset(opSymXZ(p + glm::vec3(0.0f, -1.0f, 0.0f)), 1.03f,
-                                                0.05f, glm::vec2(STRUT_OFFSET));
+template <class V>
+inline auto sdfMetal(V p) {
+  p = p - glm::vec3(0.0f, -1.0f, 0.0f);
+  const auto torus1 = sdTorus(p + glm::vec3(0.0f, -0.08f, 0.0f), glm::vec2(0.75f, 0.05f));
+  const auto torus2 = sdTorus(p + glm::vec3(0.0f, -2.0f, 0.0f), glm::vec2(0.75f, 0.05f));
+  const auto tori = opUnion(torus1, torus2);
+  const auto cylindri = sdCappedCylinderOffset(opSymXZ(p + glm::vec3(0.0f, -1.0f, 0.0f)), 1.03f,
+                                               0.05f, glm::vec2(STRUT_OFFSET));
   return opSmoothUnion(cylindri, tori, 0.1f);
 }
 
-inline float sdfLantern(const glm::vec3& p) {
+template <class V>
+inline auto sdfLantern(const V& p) {
   return opUnion(opUnion(sdfPaper(p), sdfWood(p)), sdfMetal(p));
 }
 

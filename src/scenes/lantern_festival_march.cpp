@@ -14,8 +14,12 @@ bool clipToSlab(const glm::vec3& o, const glm::vec3& dir, float lo, float hi, fl
   return t0 <= t1;
 }
 
+}  // namespace
+
 const glm::vec3 TETRA[4] = {glm::vec3(1.0f, -1.0f, -1.0f), glm::vec3(-1.0f, -1.0f, 1.0f),
                             glm::vec3(-1.0f, 1.0f, -1.0f), glm::vec3(1.0f, 1.0f, 1.0f)};
+
+namespace {
 
 // Over-relaxed sphere tracing of sdf on [t0, t1] with at most `budget` evaluations (decremented).
 template <class Sdf>

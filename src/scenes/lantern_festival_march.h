@@ -64,6 +64,7 @@ MarchHit marchWater(const LakeFrame& lake, const glm::vec3& o, const glm::vec3& 
                     const MarchLimits& lim, RayStats& stats);
 
 // Tetrahedron normals (four taps at the vertices of a tetrahedron of size eps).
+extern const glm::vec3 TETRA[4];
 glm::vec3 lanternNormal(const GridFrame& g, const LanternCell& c, const glm::vec3& p, float eps);
 glm::vec3 waterNormal(const LakeFrame& lake, const glm::vec3& p, float eps);
 

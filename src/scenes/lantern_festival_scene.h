@@ -29,10 +29,23 @@ inline uint32_t texture_seed(uint64_t seed) {
   return uint32_t(seed) ^ uint32_t(seed >> 32);
 }
 
+// A primary ray that sees the lake: where it meets it, the reflected direction, what the
+// reflection hits and the lantern's normal there.
+struct WaterBounce {
+  glm::vec3 p{0.0f}, r{0.0f};
+  CellHit hit;
+  glm::vec3 n{0.0f};
+};
+
 class LanternFestivalScene : public Scene {
  public:
   void prepare(const FrameContext& ctx) override;
   glm::vec3 radiance(const Ray& ray, RayStats& stats) const override;
+  // Draft and final march and bounce in lanes (lantern_festival_packet.cpp); the naive and
+  // reference presets go one ray at a time.
+  void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override;
+  // "sdfWater", "lanternDistance" and "repeated" (lantern_festival_distance_functions.cpp).
+  std::vector<DistanceFunction> distance_functions() const override;
   std::vector<ShaderUniform> shader_uniforms() const override;
   std::vector<ShaderTexture> shader_textures() const override;
 
@@ -45,10 +58,20 @@ class LanternFestivalScene : public Scene {
  private:
   CellHit marchLanterns(const glm::vec3& o, const glm::vec3& dir, float t_max,
                         const MarchLimits& lim, RayStats& stats) const;
+  // The normal at a lantern hit of o + t dir; t_total: distance from the eye (the footprint).
+  glm::vec3 lanternHitNormal(const glm::vec3& o, const glm::vec3& dir, const CellHit& hit,
+                             float t_total, float pixel_angle) const;
   glm::vec3 shadeLanternHit(const glm::vec3& o, const glm::vec3& dir, const CellHit& hit,
-                            float t_total, float pixel_angle) const;
-  glm::vec3 shadeWater(const glm::vec3& p, const glm::vec3& dir, float t, float pixel_angle,
-                       RayStats& stats) const;
+                            const glm::vec3& n) const;
+  // The phases of radiance(): the water bounce (normal, reflection march) and the shading.
+  static bool seesWater(const MarchHit& water, const CellHit& lantern) {
+    return water.hit && !lantern.hit;
+  }
+  WaterBounce bounceOffWater(const Ray& ray, float t, RayStats& stats) const;
+  glm::vec3 shadeWater(const WaterBounce& b) const;
+  glm::vec3 hitMask(const MarchHit& water, const CellHit& lantern) const;
+  glm::vec3 shadeHits(const Ray& ray, const MarchHit& water, const CellHit& lantern,
+                      const glm::vec3& lantern_normal, const WaterBounce& bounce) const;
   glm::vec3 applyFog(const glm::vec3& col, float t) const;
   // Normal step at path length t: a pixel footprint, or (naive preset) a world-space constant.
   float normalEps(float t, float pixel_angle) const;

@@ -33,6 +33,33 @@ std::vector<CameraPose> poses(const SceneInfo& info) {
   flat.target = flat.position + glm::dvec3(1.0, -0.02, 0.4);
   flat.fov_deg = 20.0;
   out.push_back(flat);
+  if (info.name == "sdf_morph") {
+    // Close-ups: the object fills the frame (relaxed marches, reflections of the pedestal and of
+    // the mug's inside), and the pedestal's foot with the object's shadow on the floor.
+    CameraPose close = info.default_camera;
+    close.position = close.target + (close.position - close.target) * 0.35;
+    close.fov_deg = 30.0;
+    out.push_back(close);
+    CameraPose foot = info.default_camera;
+    foot.position = glm::dvec3(-1.2, 0.5, -1.6);
+    foot.target = glm::dvec3(0.4, 0.1, 0.5);
+    out.push_back(foot);
+  }
+  if (info.name == "lantern_festival") {
+    // Level with the horizon (rays along the lake that graze the crests, long cell walks), from
+    // just above the water, and looking up (sky, reflections of nothing).
+    CameraPose level = info.default_camera;
+    level.target = level.position + glm::dvec3(1.0, 0.0, 0.35);
+    level.fov_deg = 35.0;
+    out.push_back(level);
+    CameraPose low = level;
+    low.position.y = -0.7;
+    low.target = low.position + glm::dvec3(-0.4, -0.01, 1.0);
+    out.push_back(low);
+    CameraPose up = info.default_camera;
+    up.target = up.position + glm::dvec3(0.2, 2.0, 0.5);
+    out.push_back(up);
+  }
   return out;
 }
 

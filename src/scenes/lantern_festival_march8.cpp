@@ -1,0 +1,236 @@
+#include "scenes/lantern_festival_march8.h"
+
+namespace sdfreel::lantern {
+
+namespace {
+
+constexpr float NO_LIMIT = 1e30f;
+constexpr int MAX_CELL_VISITS = 4096;  // as in lantern_festival_march.cpp
+
+// Lanes set in m (stats count each lane's step as the scalar loop does).
+uint64_t count(M8 m) {
+#ifdef __AVX__
+  return uint64_t(__builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(m))));
+#else
+  uint64_t n = 0;
+  for (int i = 0; i < LANES; ++i) n += m[i] != 0;
+  return n;
+#endif
+}
+
+// MarchLimits::eps_at with a per-lane t_offset.
+F8 epsAt(const MarchLimits& lim, F8 t_offset, F8 t) {
+  if (lim.naive) return splat(lim.hit_eps);
+  return lim.hit_eps * (t_offset + t) * lim.pixel_angle;
+}
+
+// clipToSlab in lanes: narrows t0/t1; returns the lanes whose interval is not empty.
+M8 clipToSlab8(const V3x8& o, const V3x8& dir, float lo, float hi, F8& t0, F8& t1) {
+  const M8 flat = dir.y == 0.0f;
+  const F8 ta = (lo - o.y) / dir.y, tb = (hi - o.y) / dir.y;
+  t0 = select(flat, t0, dm::max(t0, dm::min(ta, tb)));
+  t1 = select(flat, t1, dm::min(t1, dm::max(ta, tb)));
+  const M8 inside = (o.y >= lo) & (o.y <= hi);
+  return select(flat, inside, splat_mask(true)) & (t0 <= t1);
+}
+
+// boundInterval in lanes (each lane its own cylinder centre c).
+M8 boundInterval8(const GridFrame& g, const V3x8& c, const V3x8& o, const V3x8& dir, F8& t0,
+                  F8& t1) {
+  const float h = g.bound_half_height, r = g.bound_radius;
+  const float r2 = r * r;
+  const M8 sloped = dir.y != 0.0f;
+  const F8 ta = (c.y - h - o.y) / dir.y, tb = (c.y + h - o.y) / dir.y;
+  F8 lo = select(sloped, dm::min(ta, tb), splat(-NO_LIMIT));
+  F8 hi = select(sloped, dm::max(ta, tb), splat(NO_LIMIT));
+  M8 out = ~sloped & (dm::abs(o.y - c.y) > h);
+  const F8 ox = o.x - c.x, oz = o.z - c.z;
+  const F8 a = dir.x * dir.x + dir.z * dir.z;
+  const M8 across = a > 0.0f;
+  const F8 tm = -(ox * dir.x + oz * dir.z) / a;
+  const F8 qx = ox + dir.x * tm, qz = oz + dir.z * tm;
+  const F8 h2 = r2 - (qx * qx + qz * qz);
+  out |= across & (h2 < 0.0f);
+  const F8 half = dm::sqrt(h2 / a);
+  lo = select(across, dm::max(lo, tm - half), lo);
+  hi = select(across, dm::min(hi, tm + half), hi);
+  out |= ~across & (ox * ox + oz * oz > r2);
+  t0 = lo;
+  t1 = hi;
+  return ~out & (lo <= hi);
+}
+
+}  // namespace
+
+MarchHit8 marchWater8(const LakeFrame& lake, const glm::vec3& o, const V3x8& dir, float t_max,
+                      const MarchLimits& lim, M8 active, RayStats& stats) {
+  MarchHit8 out{splat_mask(false), splat(0.0f)};
+  const float top = -WATER_PLANE_OFFSET + lake.max_height;
+  F8 t = splat(0.0f);
+  if (o.y > top) {
+    active &= ~(dir.y >= 0.0f);
+    t = (top - o.y) / dir.y;
+  }
+  const F8 slope = lake.lipschitz * dm::sqrt(dir.x * dir.x + dir.z * dir.z);
+  const F8 rate = slope - dir.y, rate_back = slope + dir.y;
+  F8 t_prev = t, free_prev = splat(0.0f);
+  M8 relaxed = splat_mask(false);
+  const M8 relax = splat_mask(lim.step_factor > 1.0f);
+  // Every lane runs iteration i at the same time: the scalar loop counts `continue`s too.
+  for (int i = 0; i < lim.max_steps && any(active); ++i) {
+    const M8 over = active & (t > t_max);
+    const M8 end = over & (~relaxed | (t_prev + free_prev > t_max));
+    active &= ~end;
+    const M8 back = over & ~end;
+    t = select(back, t_prev + free_prev, t);
+    relaxed &= ~back;
+    const V3x8 p = o + dir * t;
+    const F8 gap = sdfWater(lake, p);
+    const uint64_t n = count(active);
+    stats.sdf_evals += n;
+    stats.steps += n;
+    const M8 reject =
+        active & relaxed &
+        ((gap < 0.0f) | ((rate_back > 0.0f) & (free_prev + gap / rate_back < t - t_prev)));
+    t = select(reject, t_prev + free_prev, t);
+    relaxed &= ~reject;
+    const M8 go = active & ~reject;
+    const M8 hit = go & (gap < epsAt(lim, splat(lim.t_offset), t));
+    out.hit |= hit;
+    out.t = select(hit, t, out.t);
+    const M8 leave = go & ~hit & ((rate <= 0.0f) | ((p.y > top) & (dir.y >= 0.0f)));
+    active &= ~(hit | leave);
+    const M8 step = go & ~hit & ~leave;
+    t_prev = select(step, t, t_prev);
+    free_prev = select(step, gap / rate, free_prev);
+    t = select(step, t + free_prev * lim.step_factor, t);
+    relaxed = select(step, relax, relaxed);
+  }
+  stats.capped += count(active);
+  return out;
+}
+
+CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_min, F8 t_max,
+                     const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats) {
+  CellHit8 out{splat_mask(false), splat(0.0f), {}};
+  const GridFrame& g = f.grid;
+  F8 t0 = t_min, t1 = t_max;
+  M8 live = active & clipToSlab8(o, dir, g.slab_lo, g.slab_hi, t0, t1);
+  if (!any(live)) return out;
+  V2x8 id = cellId(g, vec2_of(o.x + dir.x * t0, o.z + dir.z * t0));
+  const F8 sx = select(dir.x > 0.0f, splat(1.0f), splat(-1.0f));
+  const F8 sz = select(dir.z > 0.0f, splat(1.0f), splat(-1.0f));
+  M8 budget = M8{} + lim.max_steps, visits = M8{};
+  const M8 relax = splat_mask(lim.step_factor > 1.0f);
+  // Per lane: the cell being visited, where the ray leaves it, and the sphere trace inside it.
+  LanternCell8 cell8{};
+  F8 tx{}, tz{};
+  M8 tracing = splat_mask(false), relaxed = splat_mask(false);
+  F8 t{}, t_prev{}, d_prev{}, b{};
+
+  // The end of a visit: stop at t1, else step to the next cell (x or z first, as the scalar DDA).
+  const auto next_cell = [&](M8 m) {
+    const M8 stop = m & (dm::min(tx, tz) >= t1);
+    const M8 go = m & ~stop;
+    const M8 x_first = tx < tz;
+    id.x = select(go & x_first, id.x + sx, id.x);
+    id.y = select(go & ~x_first, id.y + sz, id.y);
+    visits -= go;  // masks are -1
+    live &= ~(stop | (go & (visits >= MAX_CELL_VISITS)));
+  };
+
+  while (any(live)) {
+    // Walk the lanes that are between lanterns until each traces one or is done: sphere-trace
+    // steps, the expensive part, then run with as many lanes as possible.
+    for (M8 need = live & ~tracing; any(need); need = live & ~tracing) {
+      stats.steps += count(need);
+      tx = select(need & (dir.x != 0.0f), ((id.x + 0.5f * sx) * g.size - o.x) / dir.x,
+                  select(need, splat(NO_LIMIT), tx));
+      tz = select(need & (dir.z != 0.0f), ((id.y + 0.5f * sz) * g.size - o.z) / dir.z,
+                  select(need, splat(NO_LIMIT), tz));
+      // Most cells are skipped by their bound: only the centres go to lanes here, the rotations
+      // when a lane enters the cell.
+      alignas(32) float cx[LANES], cy[LANES], cz[LANES];
+      for (int i = 0; i < LANES; ++i) {
+        if (need[i]) out.cell[i] = f.cell(glm::vec2(id.x[i], id.y[i]));
+        cx[i] = out.cell[i].center.x;
+        cy[i] = out.cell[i].center.y;
+        cz[i] = out.cell[i].center.z;
+      }
+      const V3x8 centre(load8(cx), load8(cy), load8(cz));
+      F8 a, bb;
+      const M8 in_bound = boundInterval8(g, centre, o, dir, a, bb);
+      a = dm::max(a, t0);
+      bb = dm::min(bb, t1);
+      const M8 enter = need & in_bound & (a <= bb);
+      for (int i = 0; i < LANES; ++i)
+        if (enter[i]) cell8.set_lane(i, out.cell[i]);
+      tracing |= enter;
+      t = select(enter, a, t);
+      t_prev = select(enter, a, t_prev);
+      d_prev = select(enter, splat(0.0f), d_prev);
+      b = select(enter, bb, b);
+      relaxed &= ~enter;
+      next_cell(need & ~enter);
+    }
+    // One step of sphereTrace in every tracing lane.
+    const M8 tr = live & tracing;
+    const M8 spent = tr & (budget <= 0);
+    const M8 st = tr & ~spent;
+    budget += st;  // masks are -1
+    const F8 d = lanternDistance(g, cell8, o + dir * t, true);
+    const uint64_t n = count(st);
+    stats.sdf_evals += n;
+    stats.steps += n;
+    const M8 reject = st & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
+    t = select(reject, t_prev + d_prev, t);
+    relaxed &= ~reject;
+    const M8 go = st & ~reject;
+    const M8 hit = go & (d < epsAt(lim, t_offset, t));
+    out.hit |= hit;
+    out.t = select(hit, t, out.t);
+    live &= ~hit;
+    const M8 step = go & ~hit;
+    t_prev = select(step, t, t_prev);
+    d_prev = select(step, d, d_prev);
+    t = select(step, t + d * lim.step_factor, t);
+    relaxed = select(step, relax, relaxed);
+    const M8 over = step & (t > b);
+    const M8 miss = over & (~relaxed | (t_prev + d_prev > b));
+    const M8 back = over & ~miss;
+    t = select(back, t_prev + d_prev, t);
+    relaxed &= ~back;
+    // A trace that ended without a hit: out of budget ends the ray, else on to the next cell.
+    const M8 ended = spent | miss;
+    tracing &= ~ended;
+    const M8 capped = ended & (budget <= 0);
+    stats.capped += count(capped);
+    live &= ~capped;
+    next_cell(ended & ~capped);
+  }
+  return out;
+}
+
+V3x8 safe_normalize8(const V3x8& v) {
+  const F8 len2 = vdot(v, v);
+  const V3x8 n = v / dm::sqrt(len2);
+  return select(len2 > SAFE_NORMALIZE_MIN_LENGTH2, n, V3x8(glm::vec3(0.0f, 1.0f, 0.0f)));
+}
+
+V3x8 waterNormal8(const LakeFrame& lake, const V3x8& p, F8 eps) {
+  V3x8 n(glm::vec3(0.0f));
+  for (const glm::vec3& k : TETRA) n = n + k * sdfWater(lake, p + k * eps);
+  return safe_normalize8(n);
+}
+
+V3x8 lanternNormal8(const GridFrame& g, const LanternCell cells[LANES], M8 m, const V3x8& p,
+                    F8 eps) {
+  LanternCell8 c{};
+  for (int i = 0; i < LANES; ++i)
+    if (m[i]) c.set_lane(i, cells[i]);
+  V3x8 n(glm::vec3(0.0f));
+  for (const glm::vec3& k : TETRA) n = n + k * lanternDistance(g, c, p + k * eps, true);
+  return select(m, safe_normalize8(n), V3x8(glm::vec3(0.0f, 1.0f, 0.0f)));
+}
+
+}  // namespace sdfreel::lantern
