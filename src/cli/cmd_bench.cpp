@@ -5,6 +5,10 @@
 // reference preset with many samples, on the CPU backend, rendered once and cached under
 // DIR/reference/ by the timeline's hash and the reference settings. Writes the table to stdout,
 // DIR/bench.csv and DIR/bench_<scene>.png (the src/bench/ library does the measuring and drawing).
+//
+// `sdfreel bench --micro [SCENE...]`: Google Benchmark micro-benchmarks of each scene's distance
+// functions, scalar and eight lanes, at fixed points of one frame (src/bench/micro_*); writes the
+// table to stdout and DIR/micro.csv.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -16,6 +20,8 @@
 
 #include "bench/csv.h"
 #include "bench/metrics.h"
+#include "bench/micro_bench.h"
+#include "bench/micro_report.h"
 #include "bench/pareto.h"
 #include "bench/plot.h"
 #include "bench/reference_cache.h"
@@ -49,6 +55,8 @@ struct BenchOptions {
   std::vector<std::string> only;  // name prefixes of the configurations to run
   bool fresh_reference = false;
   bool all_rows = false;
+  bool micro = false;
+  double micro_min_time = 0.1;  // seconds per repetition of each micro-benchmark
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -236,7 +244,57 @@ void print_preset_check(const std::vector<BenchRow>& rows) {
   }
 }
 
+// --micro: the frame at video time 4 s of each target (frame 120 at 30 fps; the last frame of a
+// shorter timeline), where the default cameras look at the scene's content.
+constexpr double MICRO_VIDEO_TIME = 4.0;
+
+bench::MicroTarget micro_target(const BenchTarget& t) {
+  const SceneInfo* info = find_scene(t.tl.scene);
+  if (!info) throw UsageError("unknown scene '" + t.tl.scene + "'");
+  const int frame = std::max(
+      0, std::min(int(std::lround(MICRO_VIDEO_TIME * t.tl.fps.value())), t.tl.frame_count() - 1));
+  const FrameContext ctx = frame_context(t.tl, *info, frame);
+  std::shared_ptr<Scene> scene = info->make();
+  scene->prepare(ctx);
+  bench::MicroTarget m;
+  m.scene = t.label;
+  m.owner = scene;
+  m.functions = scene->distance_functions();
+  m.points =
+      bench::camera_sample_points(ctx.camera, bench::MICRO_VIEW_WIDTH, bench::MICRO_VIEW_HEIGHT,
+                                  bench::MICRO_MAX_DISTANCE, bench::MICRO_POINT_SEED);
+  std::fprintf(stderr, "bench: micro %s frame %d: %zu distance functions, %d points\n",
+               t.label.c_str(), frame, m.functions.size(), m.points.size());
+  return m;
+}
+
+int run_micro(const BenchOptions& o) {
+  if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
+  if (!(o.micro_min_time > 0.0)) throw UsageError("--micro-min-time must be positive");
+  std::vector<std::string> names = o.scenes;
+  if (names.empty())
+    for (const SceneInfo& s : all_scenes()) names.push_back(s.name);
+  std::vector<bench::MicroTarget> targets;
+  for (const std::string& name : names) targets.push_back(micro_target(load_target(name, o)));
+  std::vector<bench::MicroRow> rows;
+  try {
+    rows = bench::run_micro_benchmarks(targets, {o.repetitions, o.micro_min_time});
+  } catch (const bench::LaneMismatchError& e) {
+    throw RenderError(std::string("bench --micro: ") + e.what());
+  }
+  for (const bench::MicroTarget& t : targets)
+    if (t.functions.empty()) std::printf("%s: no distance functions to time\n", t.scene.c_str());
+  std::filesystem::create_directories(o.out);
+  std::fputs(bench::format_micro_table(rows).c_str(), stdout);
+  std::printf("(medians of %d repetitions; %d points per evaluation pass)\n", o.repetitions,
+              bench::MICRO_VIEW_WIDTH * bench::MICRO_VIEW_HEIGHT);
+  bench::write_micro_csv_file(o.out + "/micro.csv", rows);
+  std::printf("csv: %s/micro.csv\n", o.out.c_str());
+  return 0;
+}
+
 int run_bench(const BenchOptions& o) {
+  if (o.micro) return run_micro(o);
   if (o.scenes.empty()) throw UsageError("bench: name at least one scene or timeline");
   if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
   std::vector<BenchTarget> targets;
@@ -333,16 +391,21 @@ int run_bench(const BenchOptions& o) {
 void add_bench_command(CLI::App& app, int& status) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "bench", "speed against error of each scene, backend and march preset, with a sweep");
-  cmd->add_option("SCENE", o->scenes, "scene names (their default timeline) or timeline files")
-      ->required();
+      "bench",
+      "speed against error of each scene, backend and march preset, with a sweep; or, with "
+      "--micro, evaluations per second of each scene's distance functions, scalar and in lanes");
+  cmd->add_option("SCENE", o->scenes,
+                  "scene names (their default timeline) or timeline files; with --micro, "
+                  "optional (default: every scene)");
   cmd->add_option("--resolution", o->resolution, "WxH of the bench frames")->capture_default_str();
   cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-2 or 0,30,60")
       ->capture_default_str();
   cmd->add_option("--backends", o->backends, "comma-separated: cpu,osmesa")->capture_default_str();
   cmd->add_option("--out", o->out, "folder for bench.csv, the plots and the reference cache")
       ->capture_default_str();
-  cmd->add_option("--repetitions", o->repetitions, "timed runs of each case; the median is kept")
+  cmd->add_option("--repetitions", o->repetitions,
+                  "timed runs of each case (with --micro: of each micro-benchmark); the median is "
+                  "kept")
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (default: all cores)");
   cmd->add_option("--only", o->only, "run only configurations whose names start with these")
@@ -351,6 +414,14 @@ void add_bench_command(CLI::App& app, int& status) {
   cmd->add_flag("--fresh-reference", o->fresh_reference,
                 "render the reference again (after a change of scene code)");
   cmd->add_flag("--all", o->all_rows, "print every row, not only presets and the front");
+  cmd->add_flag("--micro", o->micro,
+                "micro-benchmarks (Google Benchmark): each distance function of each scene, "
+                "scalar and eight lanes, at the frame at 4 s, at 2304 points (64x36 camera rays, "
+                "seeded distances in [0, 30)); checks lanes == scalar bits first (exit 1 if not); "
+                "prints evals/s and writes DIR/micro.csv");
+  cmd->add_option("--micro-min-time", o->micro_min_time,
+                  "--micro: seconds each repetition of each micro-benchmark runs at least")
+      ->capture_default_str();
   cmd->callback([o, &status] { status = run_bench(*o); });
 }
 
