@@ -18,6 +18,7 @@
 #include <limits>
 #include <map>
 
+#include "bench/backend_table.h"
 #include "bench/csv.h"
 #include "bench/metrics.h"
 #include "bench/micro_bench.h"
@@ -242,6 +243,11 @@ void print_preset_check(const std::vector<BenchRow>& rows) {
                 f->psnr_db >= FINAL_MIN_PSNR_DB ? "ok  " : "MISS", speedup,
                 speedup >= DRAFT_MIN_SPEEDUP ? "ok" : "MISS");
   }
+  // CPU against llvmpipe, when both ran (README "CPU against llvmpipe").
+  const std::vector<bench::BackendComparison> cmp = bench::compare_backends(rows);
+  if (!cmp.empty())
+    std::printf("\nCPU against OSMesa (llvmpipe), same presets, same run:\n%s",
+                bench::format_backend_table(cmp).c_str());
 }
 
 // --micro: the frame at video time 4 s of each target (frame 120 at 30 fps; the last frame of a

@@ -48,6 +48,8 @@ class LanternFestivalScene : public Scene {
   std::vector<DistanceFunction> distance_functions() const override;
   std::vector<ShaderUniform> shader_uniforms() const override;
   std::vector<ShaderTexture> shader_textures() const override;
+  // The textures are generated from their seed alone.
+  uint64_t shader_textures_key() const override { return textures_ ? textures_->seed + 1ull : 0; }
 
   // For tests and tools: the per-frame state prepare() built.
   const LanternField& field() const { return field_; }

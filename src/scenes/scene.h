@@ -84,6 +84,9 @@ class Scene {
   virtual std::vector<DistanceFunction> distance_functions() const { return {}; }
   virtual std::vector<ShaderUniform> shader_uniforms() const { return {}; }
   virtual std::vector<ShaderTexture> shader_textures() const { return {}; }
+  // Names the content of shader_textures(): equal keys, equal texels, so the backend uploads them
+  // once rather than every frame. 0: unknown, upload every frame.
+  virtual uint64_t shader_textures_key() const { return 0; }
 };
 
 struct SceneInfo {

@@ -49,6 +49,8 @@ void OsmesaBackend::begin(const SceneInfo& scene) {
     throw std::runtime_error("scene '" + scene.name +
                              "' has no GLSL shader for the osmesa backend");
   scene_name_ = scene.name;
+  textures_.clear();
+  textures_key_ = 0;
   platform_->make_current();
   program_ = driver_->compile(
       {"common/fullscreen.vert", scene.shader,
@@ -74,8 +76,15 @@ ImageRGBA OsmesaBackend::render(const FrameContext& ctx, RayStats& stats) {
   pass.target = platform_->frame_target(ctx.width, ctx.height);
   pass.uniforms = frame_uniforms(ctx);
   for (ShaderUniform& u : scene_->shader_uniforms()) pass.uniforms.push_back(std::move(u));
-  for (const ShaderTexture& t : scene_->shader_textures())
-    pass.textures.push_back({t.name, driver_->upload_texture(t)});
+  // Upload the textures when their content changes, not every frame (27 MB for the lanterns).
+  const uint64_t key = scene_->shader_textures_key();
+  if (key == 0 || key != textures_key_) {
+    textures_.clear();
+    for (const ShaderTexture& t : scene_->shader_textures())
+      textures_.push_back({t.name, driver_->upload_texture(t)});
+    textures_key_ = key;
+  }
+  pass.textures = textures_;
   driver_->run(pass);
   ImageRGBA img = driver_->read_rgba(pass.target);
   // The shader writes each pixel's SDF evaluation count into alpha (exact: < 2^24 per pixel).

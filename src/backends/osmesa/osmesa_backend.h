@@ -29,6 +29,8 @@ class OsmesaBackend : public Backend {
   std::unique_ptr<Scene> scene_;
   std::string scene_name_;
   GlProgramId program_ = -1;
+  std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_
+  uint64_t textures_key_ = 0;
 };
 
 }  // namespace sdfreel
