@@ -60,7 +60,82 @@ M8 boundInterval8(const GridFrame& g, const V3x8& c, const V3x8& o, const V3x8& 
   return ~out & (lo <= hi);
 }
 
+// sphereTrace of lantern_festival_march.cpp in lanes, from t0 to t1 per lane. The budget is
+// the same in every lane (all start together), so the loop counter stands for it. Adds the
+// capped lanes to stats as march() and marchNaive() do (a miss with the budget spent).
+template <class Sdf>
+MarchHit8 sphereTrace8(const Sdf& sdf, const V3x8& o, const V3x8& dir, F8 t0, F8 t1,
+                       const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats) {
+  MarchHit8 out{splat_mask(false), splat(0.0f)};
+  // Lanes left out keep a finite t, so the field is never evaluated at inf or NaN.
+  F8 t = select(active, t0, splat(0.0f)), t_prev = t, d_prev = splat(0.0f);
+  M8 relaxed = splat_mask(false), last = splat_mask(false);
+  const M8 relax = splat_mask(lim.step_factor > 1.0f);
+  if (lim.max_steps <= 0) last = active;
+  for (int i = 0; i < lim.max_steps && any(active); ++i) {
+    if (i == lim.max_steps - 1) last = active;  // these spend the budget this step
+    const F8 d = sdf(o + dir * t);
+    const uint64_t n = count(active);
+    stats.sdf_evals += n;
+    stats.steps += n;
+    const M8 reject = active & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
+    t = select(reject, t_prev + d_prev, t);
+    relaxed &= ~reject;
+    const M8 go = active & ~reject;
+    const M8 hit = go & (d < epsAt(lim, t_offset, t));
+    out.hit |= hit;
+    out.t = select(hit, t, out.t);
+    active &= ~hit;
+    const M8 step = go & ~hit;
+    t_prev = select(step, t, t_prev);
+    d_prev = select(step, d, d_prev);
+    t = select(step, t + d * lim.step_factor, t);
+    relaxed = select(step, relax, relaxed);
+    const M8 over = step & (t > t1);
+    const M8 miss = over & (~relaxed | (t_prev + d_prev > t1));
+    active &= ~miss;
+    const M8 back = over & ~miss;
+    t = select(back, t_prev + d_prev, t);
+    relaxed &= ~back;
+  }
+  stats.capped += count(last & ~out.hit);
+  return out;
+}
+
 }  // namespace
+
+MarchHit8 march8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_min, F8 t_max,
+                 const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats) {
+  F8 t0 = t_min, t1 = t_max;
+  active &= clipToSlab8(o, dir, f.grid.slab_lo, f.grid.slab_hi, t0, t1);
+  if (!any(active)) return MarchHit8{splat_mask(false), splat(0.0f)};
+  return sphereTrace8([&f](const V3x8& p) { return repeated(f, p); }, o, dir, t0, t1, lim, t_offset,
+                      active, stats);
+}
+
+NaiveHit8 marchNaive8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_max,
+                      bool with_water, const MarchLimits& lim, F8 t_offset, M8 active,
+                      RayStats& stats) {
+  MarchLimits plain = lim;
+  plain.step_factor = 1.0f;
+  const auto field = [&f, with_water](const V3x8& p) {
+    const F8 lanterns = repeated(f, p, true);
+    return with_water ? dm::min(lanterns, sdfWater(f.lake, p)) : lanterns;
+  };
+  const MarchHit8 h =
+      sphereTrace8(field, o, dir, splat(0.0f), t_max, plain, t_offset, active, stats);
+  NaiveHit8 out{h.hit, splat_mask(false), h.t, {}};
+  // The lantern nearest to each hit, one lane at a time as in marchNaive.
+  const V3x8 p = o + dir * h.t;
+  for (int i = 0; i < LANES; ++i) {
+    if (!h.hit[i]) continue;
+    const glm::vec3 pi = p.lane(i);
+    const NearestLantern near = nearestLantern(f, pi);
+    out.cell[i] = near.cell;
+    if (with_water && sdfWater(f.lake, pi) < near.distance) out.water[i] = -1;
+  }
+  return out;
+}
 
 MarchHit8 marchWater8(const LakeFrame& lake, const glm::vec3& o, const V3x8& dir, float t_max,
                       const MarchLimits& lim, M8 active, RayStats& stats) {

@@ -27,6 +27,21 @@ MarchHit8 marchWater8(const LakeFrame& lake, const glm::vec3& o, const V3x8& dir
 CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_min, F8 t_max,
                      const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats);
 
+// march (the reference preset's sphere tracing of repeated()) for eight rays with their own
+// origins and intervals; t_offset as in marchCells8.
+MarchHit8 march8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_min, F8 t_max,
+                 const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats);
+
+struct NaiveHit8 {
+  M8 hit, water;
+  F8 t;
+  LanternCell cell[LANES];  // the nearest lantern, in lanes that hit
+};
+// marchNaive for eight rays with their own origins; t_offset as in marchCells8.
+NaiveHit8 marchNaive8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t_max,
+                      bool with_water, const MarchLimits& lim, F8 t_offset, M8 active,
+                      RayStats& stats);
+
 // safe_normalize and waterNormal in lanes.
 V3x8 safe_normalize8(const V3x8& v);
 V3x8 waterNormal8(const LakeFrame& lake, const V3x8& p, F8 eps);

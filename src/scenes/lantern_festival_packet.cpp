@@ -1,6 +1,7 @@
-// lantern_festival's eight-lane path: the primary marches (lake, lanterns), the water normal, the
-// reflection and its march run in lanes; shading runs per lane with the scalar functions. Every
-// lane gets radiance()'s bits and stats (tests/scenes/packet_path_test.cpp).
+// lantern_festival's eight-lane path, for every preset: the primary marches (lake, lanterns),
+// the water normal, the reflection and its march run in lanes; shading runs per lane with the
+// scalar functions. Every lane gets radiance()'s bits and stats
+// (tests/scenes/packet_path_test.cpp).
 #include "scenes/lantern_festival_march8.h"
 #include "scenes/lantern_festival_scene.h"
 
@@ -14,20 +15,48 @@ F8 normalEps8(const MarchSettings& m, F8 t, float pixel_angle) {
   return dm::max(m.normal_eps * t * pixel_angle, 1e-4f);
 }
 
+// LanternFestivalScene::marchLanterns in lanes: the preset's march, and the lantern hit.
+CellHit8 marchLanterns8(const LanternField& f, const MarchSettings& m, bool reference,
+                        const V3x8& o, const V3x8& dir, F8 t_max, const MarchLimits& lim,
+                        F8 t_offset, M8 active, RayStats& stats) {
+  if (m.naive) {
+    const NaiveHit8 h = marchNaive8(f, o, dir, t_max, false, lim, t_offset, active, stats);
+    CellHit8 out{h.hit, h.t, {}};
+    for (int i = 0; i < LANES; ++i) out.cell[i] = h.cell[i];
+    return out;
+  }
+  if (!reference) return marchCells8(f, o, dir, splat(0.0f), t_max, lim, t_offset, active, stats);
+  // The seed's way: sphere tracing of repeated(), then the lantern nearest to each hit.
+  const MarchHit8 h = march8(f, o, dir, splat(0.0f), t_max, lim, t_offset, active, stats);
+  CellHit8 out{h.hit, h.t, {}};
+  const V3x8 p = o + dir * h.t;
+  for (int i = 0; i < LANES; ++i)
+    if (lane(h.hit, i)) out.cell[i] = nearestLantern(f, p.lane(i)).cell;
+  return out;
+}
+
 }  // namespace
 
 void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out,
                                            RayStats& stats) const {
-  // The naive and reference marches (marchNaive, march of repeated()) stay scalar.
-  if (march_.naive || reference_march_) return Scene::radiance_packet(rays, out, stats);
   const M8 valid = rays.valid();
   const V3x8 eye(rays.origin);
   const MarchLimits lim = limits(march_.max_steps, rays.pixel_angle, 0.0f);
-  const MarchHit8 water =
-      marchWater8(field_.lake, rays.origin, rays.dir, march_.max_dist, lim, valid, stats);
-  const F8 t_far = select(water.hit, water.t, splat(march_.max_dist));
-  const CellHit8 lantern = marchCells8(field_, eye, rays.dir, splat(0.0f), t_far, lim,
-                                       splat(lim.t_offset), valid, stats);
+  MarchHit8 water;
+  CellHit8 lantern;
+  if (march_.naive) {
+    // marchPrimaryNaive: one plain sphere trace of lanterns and lake together.
+    const NaiveHit8 h = marchNaive8(field_, eye, rays.dir, splat(march_.max_dist), true, lim,
+                                    splat(lim.t_offset), valid, stats);
+    water = MarchHit8{h.hit & h.water, h.t};
+    lantern = CellHit8{h.hit & ~h.water, h.t, {}};
+    for (int i = 0; i < LANES; ++i) lantern.cell[i] = h.cell[i];
+  } else {
+    water = marchWater8(field_.lake, rays.origin, rays.dir, march_.max_dist, lim, valid, stats);
+    const F8 t_far = select(water.hit, water.t, splat(march_.max_dist));
+    lantern = marchLanterns8(field_, march_, reference_march_, eye, rays.dir, t_far, lim,
+                             splat(lim.t_offset), valid, stats);
+  }
 
   const auto water_hit = [&](int i) { return MarchHit{lane(water.hit, i), water.t[i]}; };
   const auto lantern_hit = [&](int i) {
@@ -53,8 +82,8 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
     const V3x8 normal = waterNormal8(field_.lake, p, normalEps8(march_, water.t, rays.pixel_angle));
     const V3x8 r = rays.dir - normal * (2.0f * vdot(normal, rays.dir));
     const MarchLimits lim_r = limits(march_.reflect_steps, rays.pixel_angle, 0.0f);
-    const CellHit8 h = marchCells8(field_, p, r, splat(0.0f), splat(march_.max_dist), lim_r,
-                                   water.t, bounce, stats);
+    const CellHit8 h = marchLanterns8(field_, march_, reference_march_, p, r,
+                                      splat(march_.max_dist), lim_r, water.t, bounce, stats);
     const M8 reflects_lantern = bounce & h.hit;
     V3x8 hit_normal(glm::vec3(0.0f));
     if (any(reflects_lantern))

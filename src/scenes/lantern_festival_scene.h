@@ -41,8 +41,7 @@ class LanternFestivalScene : public Scene {
  public:
   void prepare(const FrameContext& ctx) override;
   glm::vec3 radiance(const Ray& ray, RayStats& stats) const override;
-  // Draft and final march and bounce in lanes (lantern_festival_packet.cpp); the naive and
-  // reference presets go one ray at a time.
+  // The marches and the bounce in lanes, for every preset (lantern_festival_packet.cpp).
   void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override;
   // "sdfWater", "lanternDistance" and "repeated" (lantern_festival_distance_functions.cpp).
   std::vector<DistanceFunction> distance_functions() const override;
