@@ -7,17 +7,6 @@ namespace {
 constexpr float NO_LIMIT = 1e30f;
 constexpr int MAX_CELL_VISITS = 4096;  // as in lantern_festival_march.cpp
 
-// Lanes set in m (stats count each lane's step as the scalar loop does).
-uint64_t count(M8 m) {
-#ifdef __AVX__
-  return uint64_t(__builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(m))));
-#else
-  uint64_t n = 0;
-  for (int i = 0; i < LANES; ++i) n += m[i] != 0;
-  return n;
-#endif
-}
-
 // MarchLimits::eps_at with a per-lane t_offset.
 F8 epsAt(const MarchLimits& lim, F8 t_offset, F8 t) {
   if (lim.naive) return splat(lim.hit_eps);
@@ -75,7 +64,7 @@ MarchHit8 sphereTrace8(const Sdf& sdf, const V3x8& o, const V3x8& dir, F8 t0, F8
   for (int i = 0; i < lim.max_steps && any(active); ++i) {
     if (i == lim.max_steps - 1) last = active;  // these spend the budget this step
     const F8 d = sdf(o + dir * t);
-    const uint64_t n = count(active);
+    const uint64_t n = count_lanes(active);
     stats.sdf_evals += n;
     stats.steps += n;
     const M8 reject = active & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
@@ -98,7 +87,7 @@ MarchHit8 sphereTrace8(const Sdf& sdf, const V3x8& o, const V3x8& dir, F8 t0, F8
     t = select(back, t_prev + d_prev, t);
     relaxed &= ~back;
   }
-  stats.capped += count(last & ~out.hit);
+  stats.capped += count_lanes(last & ~out.hit);
   return out;
 }
 
@@ -161,7 +150,7 @@ MarchHit8 marchWater8(const LakeFrame& lake, const glm::vec3& o, const V3x8& dir
     relaxed &= ~back;
     const V3x8 p = o + dir * t;
     const F8 gap = sdfWater(lake, p);
-    const uint64_t n = count(active);
+    const uint64_t n = count_lanes(active);
     stats.sdf_evals += n;
     stats.steps += n;
     const M8 reject =
@@ -181,7 +170,7 @@ MarchHit8 marchWater8(const LakeFrame& lake, const glm::vec3& o, const V3x8& dir
     t = select(step, t + free_prev * lim.step_factor, t);
     relaxed = select(step, relax, relaxed);
   }
-  stats.capped += count(active);
+  stats.capped += count_lanes(active);
   return out;
 }
 
@@ -218,7 +207,7 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
     // Walk the lanes that are between lanterns until each traces one or is done: sphere-trace
     // steps, the expensive part, then run with as many lanes as possible.
     for (M8 need = live & ~tracing; any(need); need = live & ~tracing) {
-      stats.steps += count(need);
+      stats.steps += count_lanes(need);
       tx = select(need & (dir.x != 0.0f), ((id.x + 0.5f * sx) * g.size - o.x) / dir.x,
                   select(need, splat(NO_LIMIT), tx));
       tz = select(need & (dir.z != 0.0f), ((id.y + 0.5f * sz) * g.size - o.z) / dir.z,
@@ -254,7 +243,7 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
     const M8 st = tr & ~spent;
     budget += st;  // masks are -1
     const F8 d = lanternDistance(g, cell8, o + dir * t, true);
-    const uint64_t n = count(st);
+    const uint64_t n = count_lanes(st);
     stats.sdf_evals += n;
     stats.steps += n;
     const M8 reject = st & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
@@ -279,7 +268,7 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
     const M8 ended = spent | miss;
     tracing &= ~ended;
     const M8 capped = ended & (budget <= 0);
-    stats.capped += count(capped);
+    stats.capped += count_lanes(capped);
     live &= ~capped;
     next_cell(ended & ~capped);
   }

@@ -11,17 +11,6 @@ namespace {
 
 using glm::vec3;
 
-// Number of set lanes: what a masked loop adds to RayStats.
-uint64_t countLanes(M8 m) {
-#ifdef __AVX__
-  return uint64_t(__builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(m))));
-#else
-  uint64_t n = 0;
-  for (int i = 0; i < LANES; ++i) n += m[i] != 0;
-  return n;
-#endif
-}
-
 F8 mapScene8(const V3x8& p, const MorphUniforms& u) {
   M8 exact;
   return mapSceneBounded(p, u, OBJECT_BOUND_MARGIN, exact);
@@ -38,7 +27,7 @@ F8 march8(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, int max_s
   F8 step = splat(0.0f);
   F8 result = splat(NO_HIT);
   for (int i = 0; i < max_steps && any(active); ++i) {
-    const uint64_t n = countLanes(active);
+    const uint64_t n = count_lanes(active);
     stats.steps += n;
     stats.sdf_evals += n;
     const F8 d = mapScene8(ro + rd * t, u);
@@ -67,7 +56,7 @@ F8 march8(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, int max_s
     omega = select(fall_back, splat(1.0f), omega);
   }
   // Lanes out of steps count as hits where they stopped.
-  stats.capped += countLanes(active);
+  stats.capped += count_lanes(active);
   return select(active, t, result);
 }
 
@@ -122,7 +111,7 @@ V3x8 safe_normalize8(const V3x8& v) {
 
 // calcNormal in lanes; lanes outside `active` are computed but not counted.
 V3x8 calcNormal8(const V3x8& p, F8 e, M8 active, const MorphUniforms& u, RayStats& stats) {
-  stats.sdf_evals += 4 * countLanes(active);
+  stats.sdf_evals += 4 * count_lanes(active);
   const vec3 a(1.0f, -1.0f, -1.0f), b(-1.0f, -1.0f, 1.0f), c(-1.0f, 1.0f, -1.0f),
       d(1.0f, 1.0f, 1.0f);
   return safe_normalize8(a * mapScene8(p + a * e, u) + b * mapScene8(p + b * e, u) +
@@ -147,7 +136,7 @@ F8 softShadow8(const V3x8& ro, M8 active, const MorphUniforms& u, RayStats& stat
   for (int i = 0; i < u.shadow_steps; ++i) {
     live &= t < span_out;
     if (!any(live)) break;
-    const uint64_t n = countLanes(live);
+    const uint64_t n = count_lanes(live);
     stats.steps += n;
     stats.sdf_evals += n;
     const F8 margin = dm::max(OBJECT_BOUND_MARGIN, t / u.shadow_k);
@@ -171,7 +160,7 @@ F8 softShadow8(const V3x8& ro, M8 active, const MorphUniforms& u, RayStats& stat
 // ambientOcclusion in lanes; lanes outside `active` are computed but not counted.
 F8 ambientOcclusion8(const V3x8& p, const V3x8& n, M8 active, const MorphUniforms& u,
                      RayStats& stats) {
-  stats.sdf_evals += AO_TAPS * countLanes(active);
+  stats.sdf_evals += AO_TAPS * count_lanes(active);
   F8 occ = splat(0.0f);
   float scale = 1.0f;
   for (int i = 0; i < AO_TAPS; ++i) {

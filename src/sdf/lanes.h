@@ -74,6 +74,16 @@ inline bool all(M8 m) {
   return true;
 #endif
 }
+// Number of set lanes: what a masked loop adds to the ray statistics.
+inline uint64_t count_lanes(M8 m) {
+#ifdef __AVX__
+  return uint64_t(__builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(m))));
+#else
+  uint64_t n = 0;
+  for (int i = 0; i < LANES; ++i) n += m[i] != 0;
+  return n;
+#endif
+}
 // Lane i of a mask as a bool.
 inline bool lane(M8 m, int i) {
   return m[i] != 0;

@@ -94,6 +94,9 @@ TEST(Lanes, AnyAllAndSelect) {
   one[5] = -1;
   EXPECT_TRUE(any(one));
   EXPECT_FALSE(all(one));
+  EXPECT_EQ(count_lanes(one), 1u);
+  EXPECT_EQ(count_lanes(every), 8u);
+  EXPECT_EQ(count_lanes(none), 0u);
   const F8 s = select(one, splat(1.0f), splat(2.0f));
   EXPECT_EQ(s[5], 1.0f);
   EXPECT_EQ(s[4], 2.0f);
