@@ -49,6 +49,40 @@ M8 boundInterval8(const GridFrame& g, const V3x8& c, const V3x8& o, const V3x8& 
   return ~out & (lo <= hi);
 }
 
+// The locals of sphereTrace (lantern_festival_march.cpp), per lane.
+struct Trace8 {
+  F8 t, t_prev, d_prev;
+  M8 relaxed;  // was the step that led here over-relaxed?
+};
+
+struct TraceStep8 {
+  M8 hit;   // d below the hit epsilon at t
+  M8 miss;  // a plain step left [.., t1]: no hit in this interval
+};
+
+// One iteration of sphereTrace's loop body for the lanes in `st`, d the distance at s.t: the
+// relaxed step's fall-back, the hit test, the step and the rule that only a plain step may end
+// the interval at t1. Shared by sphereTrace8 and the cell walk of marchCells8.
+TraceStep8 traceStep8(Trace8& s, F8 d, M8 st, F8 t1, const MarchLimits& lim, F8 t_offset,
+                      M8 relax) {
+  const M8 reject = st & s.relaxed & ((d < 0.0f) | (d + s.d_prev < s.t - s.t_prev));
+  s.t = select(reject, s.t_prev + s.d_prev, s.t);
+  s.relaxed &= ~reject;
+  const M8 go = st & ~reject;
+  const M8 hit = go & (d < epsAt(lim, t_offset, s.t));
+  const M8 step = go & ~hit;
+  s.t_prev = select(step, s.t, s.t_prev);
+  s.d_prev = select(step, d, s.d_prev);
+  s.t = select(step, s.t + d * lim.step_factor, s.t);
+  s.relaxed = select(step, relax, s.relaxed);
+  const M8 over = step & (s.t > t1);
+  const M8 miss = over & (~s.relaxed | (s.t_prev + s.d_prev > t1));
+  const M8 back = over & ~miss;
+  s.t = select(back, s.t_prev + s.d_prev, s.t);
+  s.relaxed &= ~back;
+  return {hit, miss};
+}
+
 // sphereTrace of lantern_festival_march.cpp in lanes, from t0 to t1 per lane. The budget is
 // the same in every lane (all start together), so the loop counter stands for it. Adds the
 // capped lanes to stats as march() and marchNaive() do (a miss with the budget spent).
@@ -57,35 +91,21 @@ MarchHit8 sphereTrace8(const Sdf& sdf, const V3x8& o, const V3x8& dir, F8 t0, F8
                        const MarchLimits& lim, F8 t_offset, M8 active, RayStats& stats) {
   MarchHit8 out{splat_mask(false), splat(0.0f)};
   // Lanes left out keep a finite t, so the field is never evaluated at inf or NaN.
-  F8 t = select(active, t0, splat(0.0f)), t_prev = t, d_prev = splat(0.0f);
-  M8 relaxed = splat_mask(false), last = splat_mask(false);
+  const F8 start = select(active, t0, splat(0.0f));
+  Trace8 s{start, start, splat(0.0f), splat_mask(false)};
+  M8 last = splat_mask(false);
   const M8 relax = splat_mask(lim.step_factor > 1.0f);
   if (lim.max_steps <= 0) last = active;
   for (int i = 0; i < lim.max_steps && any(active); ++i) {
     if (i == lim.max_steps - 1) last = active;  // these spend the budget this step
-    const F8 d = sdf(o + dir * t);
+    const F8 d = sdf(o + dir * s.t);
     const uint64_t n = count_lanes(active);
     stats.sdf_evals += n;
     stats.steps += n;
-    const M8 reject = active & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
-    t = select(reject, t_prev + d_prev, t);
-    relaxed &= ~reject;
-    const M8 go = active & ~reject;
-    const M8 hit = go & (d < epsAt(lim, t_offset, t));
-    out.hit |= hit;
-    out.t = select(hit, t, out.t);
-    active &= ~hit;
-    const M8 step = go & ~hit;
-    t_prev = select(step, t, t_prev);
-    d_prev = select(step, d, d_prev);
-    t = select(step, t + d * lim.step_factor, t);
-    relaxed = select(step, relax, relaxed);
-    const M8 over = step & (t > t1);
-    const M8 miss = over & (~relaxed | (t_prev + d_prev > t1));
-    active &= ~miss;
-    const M8 back = over & ~miss;
-    t = select(back, t_prev + d_prev, t);
-    relaxed &= ~back;
+    const TraceStep8 r = traceStep8(s, d, active, t1, lim, t_offset, relax);
+    out.hit |= r.hit;
+    out.t = select(r.hit, s.t, out.t);  // a hit leaves s.t as it was tested
+    active &= ~(r.hit | r.miss);
   }
   stats.capped += count_lanes(last & ~out.hit);
   return out;
@@ -189,8 +209,9 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
   // Per lane: the cell being visited, where the ray leaves it, and the sphere trace inside it.
   LanternCell8 cell8{};
   F8 tx{}, tz{};
-  M8 tracing = splat_mask(false), relaxed = splat_mask(false);
-  F8 t{}, t_prev{}, d_prev{}, b{};
+  M8 tracing = splat_mask(false);
+  Trace8 s{F8{}, F8{}, F8{}, splat_mask(false)};
+  F8 b{};  // end of the trace interval in the current cell
 
   // The end of a visit: stop at t1, else step to the next cell (x or z first, as the scalar DDA).
   const auto next_cell = [&](M8 m) {
@@ -230,11 +251,11 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
       for (int i = 0; i < LANES; ++i)
         if (enter[i]) cell8.set_lane(i, out.cell[i]);
       tracing |= enter;
-      t = select(enter, a, t);
-      t_prev = select(enter, a, t_prev);
-      d_prev = select(enter, splat(0.0f), d_prev);
+      s.t = select(enter, a, s.t);
+      s.t_prev = select(enter, a, s.t_prev);
+      s.d_prev = select(enter, splat(0.0f), s.d_prev);
       b = select(enter, bb, b);
-      relaxed &= ~enter;
+      s.relaxed &= ~enter;
       next_cell(need & ~enter);
     }
     // One step of sphereTrace in every tracing lane.
@@ -242,30 +263,16 @@ CellHit8 marchCells8(const LanternField& f, const V3x8& o, const V3x8& dir, F8 t
     const M8 spent = tr & (budget <= 0);
     const M8 st = tr & ~spent;
     budget += st;  // masks are -1
-    const F8 d = lanternDistance(g, cell8, o + dir * t, true);
+    const F8 d = lanternDistance(g, cell8, o + dir * s.t, true);
     const uint64_t n = count_lanes(st);
     stats.sdf_evals += n;
     stats.steps += n;
-    const M8 reject = st & relaxed & ((d < 0.0f) | (d + d_prev < t - t_prev));
-    t = select(reject, t_prev + d_prev, t);
-    relaxed &= ~reject;
-    const M8 go = st & ~reject;
-    const M8 hit = go & (d < epsAt(lim, t_offset, t));
-    out.hit |= hit;
-    out.t = select(hit, t, out.t);
-    live &= ~hit;
-    const M8 step = go & ~hit;
-    t_prev = select(step, t, t_prev);
-    d_prev = select(step, d, d_prev);
-    t = select(step, t + d * lim.step_factor, t);
-    relaxed = select(step, relax, relaxed);
-    const M8 over = step & (t > b);
-    const M8 miss = over & (~relaxed | (t_prev + d_prev > b));
-    const M8 back = over & ~miss;
-    t = select(back, t_prev + d_prev, t);
-    relaxed &= ~back;
+    const TraceStep8 r = traceStep8(s, d, st, b, lim, t_offset, relax);
+    out.hit |= r.hit;
+    out.t = select(r.hit, s.t, out.t);
+    live &= ~r.hit;
     // A trace that ended without a hit: out of budget ends the ray, else on to the next cell.
-    const M8 ended = spent | miss;
+    const M8 ended = spent | r.miss;
     tracing &= ~ended;
     const M8 capped = ended & (budget <= 0);
     stats.capped += count_lanes(capped);
