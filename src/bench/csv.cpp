@@ -67,16 +67,20 @@ void write_csv(std::ostream& out, const std::vector<BenchRow>& rows) {
   }
 }
 
-void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows) {
+void write_file_via_temp(const std::string& path, const std::function<void(std::ostream&)>& write) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream f(tmp);
     if (!f) throw std::runtime_error("cannot write " + tmp);
-    write_csv(f, rows);
+    write(f);
     if (!f) throw std::runtime_error("cannot write " + tmp);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0)
     throw std::runtime_error("cannot rename " + tmp + " to " + path);
+}
+
+void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows) {
+  write_file_via_temp(path, [&rows](std::ostream& out) { write_csv(out, rows); });
 }
 
 std::vector<std::string> split_csv_line(const std::string& line) {

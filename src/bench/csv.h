@@ -1,5 +1,6 @@
 #pragma once
 // bench.csv: one row per scene, backend and configuration.
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@ std::vector<std::string> csv_columns();
 void write_csv(std::ostream& out, const std::vector<BenchRow>& rows);
 // Writes DIR/bench.csv atomically enough for a report: to a temporary name, then renamed.
 void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows);
+// What write_csv_file does for any report: `write` fills path + ".tmp", which is then renamed.
+void write_file_via_temp(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // Splits one CSV line (no quoting: bench.csv has none) — for tests and tools.
 std::vector<std::string> split_csv_line(const std::string& line);

@@ -1,8 +1,8 @@
 #include "bench/micro_report.h"
 
 #include <cstdio>
-#include <fstream>
-#include <stdexcept>
+
+#include "bench/csv.h"
 
 namespace sdfreel::bench {
 
@@ -35,15 +35,7 @@ void write_micro_csv(std::ostream& out, const std::vector<MicroRow>& rows) {
 }
 
 void write_micro_csv_file(const std::string& path, const std::vector<MicroRow>& rows) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-    write_micro_csv(f, rows);
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  write_file_via_temp(path, [&rows](std::ostream& out) { write_micro_csv(out, rows); });
 }
 
 }  // namespace sdfreel::bench
