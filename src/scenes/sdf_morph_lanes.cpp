@@ -244,11 +244,8 @@ void radiancePacket(const RayPacket& rays, const MorphUniforms& u, glm::vec3* ou
   n = select(floor, V3x8(vec3(0.0f, 1.0f, 0.0f)), n);
   bias = select(floor, surfaceBias8(hitEps8(eps_per_t, spans.t_floor, u)), bias);
   const M8 surface = hit | floor;
-  // needsShadow and needsOcclusion of sdf_morph_march.h.
-  const M8 shadowed = surface & (vdot(n, u.boxes[0].dir) > 0.0f);
-  const M8 occluded =
-      surface & (u.naive ? splat_mask(true)
-                         : vlength(sp - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH);
+  const M8 shadowed = surface & needsShadow(n, u);
+  const M8 occluded = surface & needsOcclusion(sp, u);
   F8 shadow = splat(1.0f), ao = splat(1.0f);
   if (any(shadowed))
     shadow = select(shadowed, softShadow8(sp + n * bias, shadowed, u, stats), shadow);

@@ -80,11 +80,14 @@ inline glm::vec3 reflectDir(const glm::vec3& d, const glm::vec3& n) {
 
 // A surface point gets a soft shadow when it faces the key light, and ambient occlusion when an
 // occluder may lie within AO_REACH (always for the naive preset, which has no bounds).
-inline bool needsShadow(const glm::vec3& n, const MorphUniforms& u) {
-  return glm::dot(n, u.boxes[0].dir) > 0.0f;
+// Templates over the point type: a bool for one point, a lane mask for V3x8.
+template <class V>
+inline auto needsShadow(const V& n, const MorphUniforms& u) {
+  return vdot(n, u.boxes[0].dir) > 0.0f;
 }
-inline bool needsOcclusion(const glm::vec3& p, const MorphUniforms& u) {
-  return u.naive || glm::length(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH;
+template <class V>
+inline auto needsOcclusion(const V& p, const MorphUniforms& u) {
+  return either(u.naive, vlength(p - groupBoundCenter()) < GROUP_BOUND_RADIUS + AO_REACH);
 }
 
 }  // namespace sdfreel::sdf_morph

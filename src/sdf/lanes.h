@@ -74,6 +74,13 @@ inline bool all(M8 m) {
   return true;
 #endif
 }
+// A per-frame flag or'ed into a per-point condition (a bool, or a mask of lanes).
+inline bool either(bool uniform, bool m) {
+  return uniform || m;
+}
+inline M8 either(bool uniform, M8 m) {
+  return splat_mask(uniform) | m;
+}
 // Number of set lanes: what a masked loop adds to the ray statistics.
 inline uint64_t count_lanes(M8 m) {
 #ifdef __AVX__
