@@ -14,25 +14,11 @@
 
 #include "scenes/lantern_festival_march8.h"
 #include "scenes/lantern_festival_scene.h"
+#include "scenes/lantern_lanes_context.h"
 #include "scenes/registry.h"
 
 namespace sdfreel::lantern {
 namespace {
-
-FrameContext context(double time, uint64_t seed) {
-  const SceneInfo* info = find_scene("lantern_festival");
-  FrameContext ctx;
-  ctx.width = 16;
-  ctx.height = 9;
-  ctx.scene_time = time;
-  ctx.video_time = time;
-  ctx.seed = seed;
-  ctx.quality = Quality::Final;
-  ctx.pose = info->default_camera;
-  ctx.params = ParamValues(&info->params);
-  finish_frame_context(ctx);
-  return ctx;
-}
 
 struct Points {
   std::vector<float> x, y, z;
@@ -70,7 +56,7 @@ TEST(LanternLanes, DistanceFunctionsGiveScalarBitsInEveryLane) {
   for (uint64_t seed : {1u, 7u})
     for (double time : {0.0, 4.3}) {
       LanternFestivalScene scene;
-      scene.prepare(context(time, seed));
+      scene.prepare(test::lantern_lanes_context(time, seed));
       const std::vector<DistanceFunction> fns = scene.distance_functions();
       std::set<std::string> names;
       const Points p = random_points(uint32_t(seed * 31 + time * 10), scene.field().grid.size);
@@ -85,7 +71,7 @@ TEST(LanternLanes, DistanceFunctionsGiveScalarBitsInEveryLane) {
 // The distance functions are the scene's own: the named scalar function at the same point.
 TEST(LanternLanes, DistanceFunctionsAreTheScenesFunctions) {
   LanternFestivalScene scene;
-  scene.prepare(context(1.0, 1));
+  scene.prepare(test::lantern_lanes_context(1.0, 1));
   const LanternField& f = scene.field();
   const Points p = random_points(5, f.grid.size);
   for (const DistanceFunction& fn : scene.distance_functions()) {
@@ -107,7 +93,7 @@ TEST(LanternLanes, DistanceFunctionsAreTheScenesFunctions) {
 // the +Y fall-back of safe_normalize.
 TEST(LanternLanes, WaterNormalGivesScalarBits) {
   LanternFestivalScene scene;
-  scene.prepare(context(2.5, 3));
+  scene.prepare(test::lantern_lanes_context(2.5, 3));
   const LakeFrame& lake = scene.field().lake;
   const Points p = random_points(9, scene.field().grid.size);
   std::mt19937 rng(4);

@@ -10,24 +10,11 @@
 
 #include "scenes/lantern_festival_march8.h"
 #include "scenes/lantern_festival_scene.h"
+#include "scenes/lantern_lanes_context.h"
 #include "scenes/registry.h"
 
 namespace sdfreel::lantern {
 namespace {
-
-FrameContext context() {
-  const SceneInfo* info = find_scene("lantern_festival");
-  FrameContext ctx;
-  ctx.width = 16;
-  ctx.height = 9;
-  ctx.scene_time = 3.7;
-  ctx.video_time = 3.7;
-  ctx.quality = Quality::Final;
-  ctx.pose = info->default_camera;
-  ctx.params = ParamValues(&info->params);
-  finish_frame_context(ctx);
-  return ctx;
-}
 
 struct Ray8 {
   V3x8 o, dir;
@@ -76,7 +63,7 @@ bool same_stats(const RayStats& a, const RayStats& b) {
 
 class MarchLanes : public ::testing::Test {
  protected:
-  void SetUp() override { scene_.prepare(context()); }
+  void SetUp() override { scene_.prepare(test::lantern_lanes_context(3.7)); }
   LanternFestivalScene scene_;
 };
 

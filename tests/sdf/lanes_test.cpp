@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -102,7 +103,26 @@ TEST(Lanes, AnyAllAndSelect) {
   EXPECT_EQ(s[4], 2.0f);
 }
 
-// Every templated primitive: lanes of random points against the glm call on each point.
+// Every templated primitive, for one point type: the same calls serve lanes and single points.
+template <class V>
+auto primitives(const V& p) {
+  const glm::vec3 b(0.6f, 0.3f, 0.9f);
+  using F = decltype(sdSphere(p, 0.7f));
+  return std::array<F, 11>{
+      sdSphere(p, 0.7f),
+      sdBox(p, b),
+      sdRoundBox(p, b, 0.1f),
+      sdTorus(p, glm::vec2(0.8f, 0.2f)),
+      sdCappedTorus(p, glm::vec2(0.866f, 0.5f), 0.7f, 0.1f),
+      sdCappedCylinder(p, 0.9f, 0.4f),
+      sdCappedCylinderOffset(p, 1.03f, 0.05f, glm::vec2(0.53f)),
+      sdPlane(p, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f),
+      opSmoothUnion(sdTorus(p, glm::vec2(0.8f, 0.2f)), sdBox(p, b), 0.1f),
+      opSubtraction(sdBox(p, b), opOnion(sdCappedCylinder(p, 0.9f, 0.4f), 0.03f)),
+      sdBox(opSymXZ(rotateY(p, 0.8f, 0.6f)), b)};
+}
+
+// Lanes of random points against the glm call on each point.
 TEST(Lanes, PrimitivesMatchScalarBits) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-2.5f, 2.5f);
@@ -113,35 +133,12 @@ TEST(Lanes, PrimitivesMatchScalarBits) {
     // Exact zeros and axis points, where abs/sign/select choices matter.
     if (rep % 7 == 0) p.x = splat(0.0f);
     if (rep % 11 == 0) p.z = splat(-0.0f);
-    const glm::vec3 b(0.6f, 0.3f, 0.9f);
-    const F8 r[] = {sdSphere(p, 0.7f),
-                    sdBox(p, b),
-                    sdRoundBox(p, b, 0.1f),
-                    sdTorus(p, glm::vec2(0.8f, 0.2f)),
-                    sdCappedTorus(p, glm::vec2(0.866f, 0.5f), 0.7f, 0.1f),
-                    sdCappedCylinder(p, 0.9f, 0.4f),
-                    sdCappedCylinderOffset(p, 1.03f, 0.05f, glm::vec2(0.53f)),
-                    sdPlane(p, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f),
-                    opSmoothUnion(sdTorus(p, glm::vec2(0.8f, 0.2f)), sdBox(p, b), 0.1f),
-                    opSubtraction(sdBox(p, b), opOnion(sdCappedCylinder(p, 0.9f, 0.4f), 0.03f)),
-                    sdBox(opSymXZ(rotateY(p, 0.8f, 0.6f)), b)};
+    const auto lanes = primitives(p);
     for (int k = 0; k < LANES; ++k) {
-      const glm::vec3 q = p.lane(k);
-      const float s[] = {
-          sdSphere(q, 0.7f),
-          sdBox(q, b),
-          sdRoundBox(q, b, 0.1f),
-          sdTorus(q, glm::vec2(0.8f, 0.2f)),
-          sdCappedTorus(q, glm::vec2(0.866f, 0.5f), 0.7f, 0.1f),
-          sdCappedCylinder(q, 0.9f, 0.4f),
-          sdCappedCylinderOffset(q, 1.03f, 0.05f, glm::vec2(0.53f)),
-          sdPlane(q, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f),
-          opSmoothUnion(sdTorus(q, glm::vec2(0.8f, 0.2f)), sdBox(q, b), 0.1f),
-          opSubtraction(sdBox(q, b), opOnion(sdCappedCylinder(q, 0.9f, 0.4f), 0.03f)),
-          sdBox(opSymXZ(rotateY(q, 0.8f, 0.6f)), b)};
-      for (size_t f = 0; f < sizeof s / sizeof s[0]; ++f) {
+      const auto single = primitives(p.lane(k));
+      for (size_t f = 0; f < single.size(); ++f) {
         ++checked;
-        if (!same_bits(r[f][k], s[f])) ++bad;
+        if (!same_bits(lanes[f][k], single[f])) ++bad;
       }
     }
   }
