@@ -91,7 +91,11 @@ Manifest manifest_from_json(const std::string& text) {
       m.frames[fr.index] = fr;
     }
   } catch (const json::exception& e) {
-    throw std::runtime_error(std::string("malformed manifest: ") + e.what());
+    // Drop the library's "[json.exception.parse_error.101] " tag: users read what is wrong.
+    const std::string what = e.what();
+    const size_t tag_end = what.find("] ");
+    throw std::runtime_error("malformed manifest: " +
+                             (tag_end == std::string::npos ? what : what.substr(tag_end + 2)));
   }
   return m;
 }
