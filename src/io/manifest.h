@@ -1,5 +1,5 @@
 #pragma once
-// manifest.json (spec/cli.md): what was rendered, with which settings and libraries, and per-frame
+// manifest.json (docs/cli.md): what was rendered, with which settings and libraries, and per-frame
 // hashes and times. Also writes frames.framemd5 from it. Both are rewritten atomically after every
 // frame, under a file lock, so concurrent shards in one folder merge instead of clobbering.
 #include <map>

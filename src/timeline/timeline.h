@@ -1,5 +1,5 @@
 #pragma once
-// The parsed, validated timeline (spec/timeline.md). Parsing and validation live in parse.cpp;
+// The parsed, validated timeline (docs/timeline.md). Parsing and validation live in parse.cpp;
 // errors are InputError with file:line:column.
 #include <cstdint>
 #include <map>

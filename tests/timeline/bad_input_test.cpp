@@ -1,4 +1,4 @@
-// One test per rule of spec/timeline.md "Bad input": the message and where it points.
+// One test per rule of docs/timeline.md "What is refused": the message and where it points.
 #include <gtest/gtest.h>
 
 #include "timeline/fixture.h"

@@ -10,7 +10,7 @@ namespace {
 using testing::TimelineFiles;
 using testing::video_with;
 
-// spec/timeline.md's example, with the sdf_morph scene and its parameters.
+// the timeline contract's example (docs/timeline.md), with the sdf_morph scene and its parameters.
 const char* kSpecExample = R"([video]
 scene      = "sdf_morph"
 fps        = 30                   # integer, or a rational string such as "30000/1001"
