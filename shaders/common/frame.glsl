@@ -45,3 +45,10 @@ uniform MarchSettings u_march;
 uniform int u_sample_count;
 uniform float u_inv_samples;  // 1 / sample count, computed on the host like the CPU backend
 uniform vec2 u_sample_offsets[SDFREEL_MAX_SAMPLES];
+// Frame plans run once per sample (src/render/frame_plan.h): this pass's sample offset, and the
+// camera model of src/render/camera_model.h with the projection moved by that offset.
+uniform vec2 u_sample_offset;
+uniform mat4 u_view;
+uniform mat4 u_projection;
+uniform float u_near_plane;
+uniform float u_depth_scale;  // far / (far - near)

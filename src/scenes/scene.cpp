@@ -2,10 +2,20 @@
 
 namespace sdfreel {
 
-M8 RayPacket::valid() const {
-  M8 m;
-  for (int i = 0; i < LANES; ++i) m[i] = i < count ? -1 : 0;
-  return m;
+FramePlan Scene::frame_plan(const FrameContext&) const {
+  RayPass pass;
+  pass.name = "radiance";
+  pass.packet = [this](const RayPacket& rays, RayPassOutput& out, RayStats& stats) {
+    radiance_packet(rays, out.colour, stats);
+    for (int i = 0; i < LANES; ++i) out.keep[i] = true;
+  };
+  pass.scalar = [this](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats& stats) {
+    colour = radiance(ray, stats);
+    keep = true;
+  };
+  FramePlan plan;
+  plan.passes.push_back(std::move(pass));
+  return plan;
 }
 
 void Scene::radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const {

@@ -9,55 +9,13 @@
 #include <vector>
 
 #include "render/frame_context.h"
+#include "render/frame_plan.h"
 #include "render/params.h"
+#include "render/rays.h"
+#include "render/shader_inputs.h"
 #include "sdf/lanes.h"
 
 namespace sdfreel {
-
-// Per-sample counters, summed per frame for the bench (SDF evaluations per pixel, step caps).
-struct RayStats {
-  uint64_t sdf_evals = 0;
-  uint64_t steps = 0;
-  uint64_t capped = 0;  // rays that hit max_steps
-  void add(const RayStats& o) {
-    sdf_evals += o.sdf_evals;
-    steps += o.steps;
-    capped += o.capped;
-  }
-};
-
-// Per-frame constants a scene hands to its GLSL twin (OSMesa backend): the same numbers that
-// prepare() computed for the C++ path, so both backends start from identical inputs.
-struct ShaderUniform {
-  std::string name;           // GLSL uniform name
-  int components = 1;         // 1..4: float, vec2, vec3, vec4
-  std::vector<float> values;  // components * array length (array when longer)
-};
-
-// A texture a scene generates (blue noise, sky, paper maps) for its GLSL twin. Shaders should
-// read it with texelFetch and filter in code exactly as the C++ path does.
-struct ShaderTexture {
-  std::string name;  // sampler uniform name
-  int width = 0, height = 0, channels = 4;
-  std::vector<float> texels;  // width * height * channels, row-major, row 0 first
-};
-
-struct Ray {
-  glm::vec3 origin;
-  glm::vec3 dir;      // unit length
-  float pixel_angle;  // angular size of one pixel (radians): hit epsilon grows with t * pixel_angle
-};
-
-// Up to LANES primary rays from one eye: the CPU backend's SIMD unit. Lanes >= count are padding
-// (copies of the last ray): inactive, never counted in RayStats, their output ignored.
-struct RayPacket {
-  glm::vec3 origin;
-  V3x8 dir;           // unit length
-  float pixel_angle;  // as in Ray
-  int count = LANES;  // valid lanes, 1..LANES
-  M8 valid() const;   // lane < count
-  Ray ray(int i) const { return Ray{origin, dir.lane(i), pixel_angle}; }
-};
 
 // A distance function of a scene, for micro-benchmarks and lane tests: d[i] at (x[i], y[i], z[i])
 // for i < n (n a multiple of LANES), one point at a time (`scalar`) or eight lanes at a time
@@ -79,6 +37,9 @@ class Scene {
   // and adding the same stats. The default runs radiance() lane by lane; scenes override it with
   // eight-lane code (sdf/lanes.h).
   virtual void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const;
+  // The frame as a plan of passes (render/frame_plan.h), after prepare(). The default is one ray
+  // pass of radiance_packet (radiance on the scalar path) into "colour", GLSL SceneInfo::shader.
+  virtual FramePlan frame_plan(const FrameContext& ctx) const;
   // For the OSMesa backend, after prepare(): the per-frame constants and textures its shader reads.
   // After prepare(): the distance functions its marches evaluate, scalar and in lanes.
   virtual std::vector<DistanceFunction> distance_functions() const { return {}; }

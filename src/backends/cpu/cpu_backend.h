@@ -1,7 +1,8 @@
 #pragma once
-// The CPU backend: the scene's C++ code over tiles on all cores, samples summed in fixed order.
-// Rays go to the scene in packets of eight (Scene::radiance_packet, SIMD lanes) or one by one
-// (Scene::radiance, `packets` false or SDFREEL_SIMD=0 in the environment): the same bits.
+// The CPU backend: the scene's frame plan (render/frame_plan.h) run by plan_runner, its passes
+// over tiles on all cores, samples summed in fixed order. Ray passes get rays in packets of eight
+// (Scene::radiance_packet, SIMD lanes) or one by one (Scene::radiance, `packets` false or
+// SDFREEL_SIMD=0 in the environment): the same bits.
 #include <memory>
 
 #include "render/backend.h"
@@ -22,11 +23,6 @@ class CpuBackend : public Backend {
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
 
  private:
-  void render_tile_packets(const FrameContext& ctx, const Tile& t, float pixel_angle,
-                           ImageRGBA& img, RayStats& stats) const;
-  void render_tile_scalar(const FrameContext& ctx, const Tile& t, float pixel_angle, ImageRGBA& img,
-                          RayStats& stats) const;
-
   int threads_, tile_size_;
   bool packets_;
   std::unique_ptr<Scene> scene_;

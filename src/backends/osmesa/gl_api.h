@@ -23,6 +23,8 @@ namespace sdfreel {
   X(PFNGLDEPTHMASKPROC, DepthMask)                             \
   X(PFNGLBLENDFUNCPROC, BlendFunc)                             \
   X(PFNGLBLENDEQUATIONPROC, BlendEquation)                     \
+  X(PFNGLCULLFACEPROC, CullFace)                               \
+  X(PFNGLFRONTFACEPROC, FrontFace)                             \
   X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                     \
   X(PFNGLCLEARBUFFERFIPROC, ClearBufferfi)                     \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                         \
@@ -67,6 +69,7 @@ namespace sdfreel {
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)         \
+  X(PFNGLVERTEXATTRIBDIVISORPROC, VertexAttribDivisor)         \
   X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)         \
   X(PFNGLDRAWELEMENTSINSTANCEDPROC, DrawElementsInstanced)     \
   X(PFNGLGENTEXTURESPROC, GenTextures)                         \

@@ -90,7 +90,7 @@ GlDriver::~GlDriver() {
   for (const GlProgram& p : programs_) gl_.DeleteProgram(p.id);
   for (MeshBuffers& m : meshes_) {
     gl_.DeleteVertexArrays(1, &m.vao);
-    gl_.DeleteBuffers(4, m.buffers);
+    gl_.DeleteBuffers(5, m.buffers);
   }
   for (auto& [name, tex] : textures_) gl_.DeleteTextures(1, &tex);
   for (GlRenderTarget& t : targets_) {
@@ -112,7 +112,7 @@ GlMeshId GlDriver::create_mesh(const GlMesh& mesh) {
   MeshBuffers m;
   gl_.GenVertexArrays(1, &m.vao);
   gl_.BindVertexArray(m.vao);
-  gl_.GenBuffers(4, m.buffers);
+  gl_.GenBuffers(5, m.buffers);
   auto attribute = [&](GLuint index, const std::vector<float>& data, int size) {
     if (data.empty()) return;
     gl_.BindBuffer(GL_ARRAY_BUFFER, m.buffers[index]);
@@ -131,10 +131,30 @@ GlMeshId GlDriver::create_mesh(const GlMesh& mesh) {
                    mesh.indices.data(), GL_STATIC_DRAW);
   }
   m.count = GLsizei(m.indexed ? mesh.indices.size() : mesh.positions.size() / 3);
+  // One identity instance until set_instances: a mesh draws where its vertices are.
+  const float identity[20] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0};
+  gl_.BindBuffer(GL_ARRAY_BUFFER, m.buffers[4]);
+  gl_.BufferData(GL_ARRAY_BUFFER, sizeof identity, identity, GL_DYNAMIC_DRAW);
+  for (GLuint a = 0; a < 5; ++a) {
+    gl_.EnableVertexAttribArray(3 + a);
+    gl_.VertexAttribPointer(3 + a, 4, GL_FLOAT, GL_FALSE, 20 * sizeof(float),
+                            reinterpret_cast<const void*>(size_t(a) * 4 * sizeof(float)));
+    gl_.VertexAttribDivisor(3 + a, 1);
+  }
   gl_.BindVertexArray(0);
   gl_.check("creating a mesh");
   meshes_.push_back(m);
   return GlMeshId(meshes_.size() - 1);
+}
+
+void GlDriver::set_instances(GlMeshId mesh, const std::vector<float>& per_instance) {
+  if (per_instance.empty() || per_instance.size() % 20 != 0)
+    throw std::invalid_argument("set_instances: 20 floats an instance");
+  const MeshBuffers& m = meshes_.at(size_t(mesh));
+  gl_.BindBuffer(GL_ARRAY_BUFFER, m.buffers[4]);
+  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(per_instance.size() * sizeof(float)),
+                 per_instance.data(), GL_DYNAMIC_DRAW);
+  gl_.check("setting instances");
 }
 
 GLuint GlDriver::upload_texture(const ShaderTexture& t) {
@@ -288,8 +308,15 @@ void GlDriver::run(const GlPass& pass) {
     gl_.Disable(GL_DEPTH_TEST);
   } else {
     gl_.Enable(GL_DEPTH_TEST);
-    gl_.DepthFunc(GL_LESS);
-    gl_.DepthMask(pass.depth == DepthMode::TestAndWrite ? GL_TRUE : GL_FALSE);
+    gl_.DepthFunc(pass.depth == DepthMode::Always ? GL_ALWAYS : GL_LESS);
+    gl_.DepthMask(pass.depth == DepthMode::TestOnly ? GL_FALSE : GL_TRUE);
+  }
+  if (pass.cull == GlCull::None) {
+    gl_.Disable(GL_CULL_FACE);
+  } else {
+    gl_.Enable(GL_CULL_FACE);
+    gl_.FrontFace(GL_CCW);
+    gl_.CullFace(pass.cull == GlCull::Back ? GL_BACK : GL_FRONT);
   }
   if (pass.blend == BlendMode::Replace) {
     gl_.Disable(GL_BLEND);

@@ -36,6 +36,9 @@ class GlDriver {
   GlProgramId compile(const GlProgramFiles& files);
   const GlProgram& program(GlProgramId id) const { return programs_.at(size_t(id)); }
   GlMeshId create_mesh(const GlMesh& mesh);
+  // Per-instance attributes of `mesh` for the next draws: 20 floats an instance, the model
+  // matrix column-major (attributes 3..6) and a free vec4 (attribute 7).
+  void set_instances(GlMeshId mesh, const std::vector<float>& per_instance);
   // Creates the float texture named t.name, or refills it; returns its GL name. Nearest
   // filtering, clamped: shaders read texels with texelFetch and filter in code like the C++ does.
   GLuint upload_texture(const ShaderTexture& t);
@@ -47,7 +50,7 @@ class GlDriver {
 
  private:
   struct MeshBuffers {
-    GLuint vao = 0, buffers[4] = {0, 0, 0, 0};
+    GLuint vao = 0, buffers[5] = {0, 0, 0, 0, 0};  // position, normal, uv, index, instance
     GLsizei count = 0;
     bool indexed = false;
   };

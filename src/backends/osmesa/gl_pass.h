@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "backends/osmesa/gl_platform.h"
+#include "render/triangle_mesh.h"
 #include "scenes/scene.h"
 
 namespace sdfreel {
@@ -16,7 +17,9 @@ using GlProgramId = int;  // from GlDriver::compile
 using GlMeshId = int;     // from GlDriver::create_mesh
 constexpr GlMeshId FULL_SCREEN_TRIANGLE = -1;
 
-enum class DepthMode { Off, TestAndWrite, TestOnly };  // LESS test when on
+// LESS test when on; Always writes depth without testing (a ray pass that lays down depth).
+enum class DepthMode { Off, TestAndWrite, TestOnly, Always };
+enum class GlCull { None, Back, Front };  // front faces are counter-clockwise in window space
 enum class BlendMode { Replace, Add, PremultipliedOver };
 
 // A sampler uniform and the GL texture it reads: a scene texture (GlDriver::texture) or a colour
@@ -35,6 +38,7 @@ struct GlPass {
   bool clear = true;  // clear colour (and depth, if the target has it) first
   std::array<float, 4> clear_color{0.0f, 0.0f, 0.0f, 0.0f};
   DepthMode depth = DepthMode::Off;
+  GlCull cull = GlCull::None;
   BlendMode blend = BlendMode::Replace;
   // Every active non-sampler uniform of the program must be given a value: an unset uniform
   // would silently read 0, the classic way for two backends to drift apart.
@@ -43,10 +47,8 @@ struct GlPass {
 };
 
 // Triangle mesh: attribute 0 position (vec3), 1 normal (vec3), 2 uv (vec2). Normals and uvs may
-// be empty; indices may be empty (then vertices are drawn in order, three per triangle).
-struct GlMesh {
-  std::vector<float> positions, normals, uvs;
-  std::vector<unsigned> indices;
-};
+// be empty; indices may be empty (then vertices are drawn in order, three per triangle). Per
+// instance (GlDriver::set_instances): attributes 3..6 the model matrix's columns, 7 a free vec4.
+using GlMesh = TriangleMesh;
 
 }  // namespace sdfreel

@@ -27,8 +27,10 @@ OsmesaBackend::OsmesaBackend() : platform_(std::make_unique<OsmesaPlatform>()) {
 OsmesaBackend::~OsmesaBackend() {
   try {
     platform_->make_current();  // the driver deletes its GL objects in this context
+    runner_.reset();
     driver_.reset();
   } catch (const GlPlatformError&) {
+    runner_.release();
     driver_.release();  // no context to delete them in: destroying the context frees them
   }
 }
@@ -48,13 +50,12 @@ void OsmesaBackend::begin(const SceneInfo& scene) {
   if (scene.shader.empty())
     throw std::runtime_error("scene '" + scene.name +
                              "' has no GLSL shader for the osmesa backend");
-  scene_name_ = scene.name;
+  scene_shader_ = scene.shader;
   textures_.clear();
   textures_key_ = 0;
   platform_->make_current();
-  program_ = driver_->compile(
-      {"common/fullscreen.vert", scene.shader,
-       "#define SDFREEL_MAX_SAMPLES " + std::to_string(MAX_SHADER_SAMPLES) + "\n"});
+  runner_ = std::make_unique<GlPlanRunner>(*driver_);
+  runner_->program("common/fullscreen.vert", scene.shader);  // compile errors before any frame
   // llvmpipe compiles the shader to machine code at its first draw, which takes seconds for a
   // large scene: draw one pixel now, so that frame times (manifest, bench) measure rendering.
   FrameContext warm_up;
@@ -70,12 +71,7 @@ ImageRGBA OsmesaBackend::render(const FrameContext& ctx, RayStats& stats) {
   if (!scene_) throw std::logic_error("OsmesaBackend::render before begin");
   platform_->make_current();
   scene_->prepare(ctx);
-  GlPass pass;
-  pass.name = scene_name_;
-  pass.program = program_;
-  pass.target = platform_->frame_target(ctx.width, ctx.height);
-  pass.uniforms = frame_uniforms(ctx);
-  for (ShaderUniform& u : scene_->shader_uniforms()) pass.uniforms.push_back(std::move(u));
+  GlSceneInputs inputs{scene_shader_, scene_->shader_uniforms(), {}};
   // Upload the textures when their content changes, not every frame (27 MB for the lanterns).
   const uint64_t key = scene_->shader_textures_key();
   if (key == 0 || key != textures_key_) {
@@ -84,15 +80,8 @@ ImageRGBA OsmesaBackend::render(const FrameContext& ctx, RayStats& stats) {
       textures_.push_back({t.name, driver_->upload_texture(t)});
     textures_key_ = key;
   }
-  pass.textures = textures_;
-  driver_->run(pass);
-  ImageRGBA img = driver_->read_rgba(pass.target);
-  // The shader writes each pixel's SDF evaluation count into alpha (exact: < 2^24 per pixel).
-  for (size_t i = 3; i < img.pixels.size(); i += 4) {
-    stats.sdf_evals += uint64_t(img.pixels[i]);
-    img.pixels[i] = 1.0f;
-  }
-  return img;
+  inputs.textures = textures_;
+  return runner_->run(scene_->frame_plan(ctx), ctx, inputs, stats);
 }
 
 }  // namespace sdfreel

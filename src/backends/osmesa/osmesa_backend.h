@@ -1,11 +1,12 @@
 #pragma once
 // The OSMesa backend: a scene's GLSL twin (shaders/<scene>.glsl) on Mesa's llvmpipe. Per frame it
-// runs the C++ scene's prepare() for its per-frame constants, hands the shader the same
-// FrameContext the CPU backend reads, draws one full-screen pass into the float frame target
-// and reads the linear image back.
+// runs the C++ scene's prepare() for its per-frame constants and its frame plan, hands the shaders
+// the same FrameContext the CPU backend reads, runs the plan's passes (gl_plan_runner.h) and
+// reads the linear image back.
 #include <memory>
 
 #include "backends/osmesa/gl_driver.h"
+#include "backends/osmesa/gl_plan_runner.h"
 #include "backends/osmesa/osmesa_platform.h"
 #include "render/backend.h"
 #include "scenes/scene.h"
@@ -25,10 +26,10 @@ class OsmesaBackend : public Backend {
 
  private:
   std::unique_ptr<OsmesaPlatform> platform_;
-  std::unique_ptr<GlDriver> driver_;  // destroyed before the platform (needs its context)
+  std::unique_ptr<GlDriver> driver_;      // destroyed before the platform (needs its context)
+  std::unique_ptr<GlPlanRunner> runner_;  // destroyed before the driver
   std::unique_ptr<Scene> scene_;
-  std::string scene_name_;
-  GlProgramId program_ = -1;
+  std::string scene_shader_;
   std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_
   uint64_t textures_key_ = 0;
 };

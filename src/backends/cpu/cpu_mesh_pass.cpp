@@ -1,0 +1,191 @@
+#include "backends/cpu/cpu_mesh_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "render/tiling.h"
+
+namespace sdfreel {
+
+namespace {
+
+// A vertex after the vertex stage: clip position and the varyings.
+struct ClipVertex {
+  glm::vec4 clip;
+  glm::vec3 world, normal;
+  glm::vec2 uv;
+};
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t) {
+  return {a.clip + (b.clip - a.clip) * t, a.world + (b.world - a.world) * t,
+          a.normal + (b.normal - a.normal) * t, a.uv + (b.uv - a.uv) * t};
+}
+
+// A triangle ready to rasterise: window positions, 1/w, z_w, and what fragments need.
+struct ScreenTriangle {
+  glm::dvec2 p[3];  // window coordinates, y up, pixel centres at +0.5
+  double inv_w[3];
+  double depth[3];  // z_w
+  ClipVertex v[3];
+  glm::vec4 data;
+  bool front;
+};
+
+// Clips a triangle against the near plane (z >= -w): 0, 1 or 2 triangles.
+int clip_near(const ClipVertex in[3], ClipVertex out[6]) {
+  ClipVertex poly[4];
+  int n = 0;
+  for (int i = 0; i < 3; ++i) {
+    const ClipVertex& a = in[i];
+    const ClipVertex& b = in[(i + 1) % 3];
+    const float da = a.clip.z + a.clip.w, db = b.clip.z + b.clip.w;
+    if (da >= 0.0f) poly[n++] = a;
+    if ((da >= 0.0f) != (db >= 0.0f)) poly[n++] = lerp(a, b, da / (da - db));
+  }
+  if (n < 3) return 0;
+  out[0] = poly[0], out[1] = poly[1], out[2] = poly[2];
+  if (n == 3) return 1;
+  out[3] = poly[0], out[4] = poly[2], out[5] = poly[3];
+  return 2;
+}
+
+// The top-left rule in window space with y up: a pixel centre exactly on an edge is inside when
+// the edge is a left edge or a top edge of the (counter-clockwise ordered) triangle.
+bool top_left(const glm::dvec2& a, const glm::dvec2& b) {
+  const glm::dvec2 e = b - a;
+  return (e.y == 0.0 && e.x < 0.0) || e.y < 0.0;
+}
+
+double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc) {
+  const TriangleMesh& m = *pass.mesh;
+  const FrameContext& f = pc.frame;
+  const glm::mat4 view_proj =
+      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
+  std::vector<ScreenTriangle> out;
+  for (const MeshInstance& inst : pass.instances) {
+    const glm::mat3 normal_matrix(inst.model);
+    for (size_t t = 0; t < m.triangle_count(); ++t) {
+      ClipVertex v[3];
+      for (int k = 0; k < 3; ++k) {
+        const unsigned i = m.index(t * 3 + size_t(k));
+        const glm::vec4 world =
+            inst.model * glm::vec4(m.positions[i * 3], m.positions[i * 3 + 1],
+                                   m.positions[i * 3 + 2], 1.0f);
+        v[k].world = glm::vec3(world);
+        v[k].clip = view_proj * world;
+        v[k].normal = m.normals.empty() ? glm::vec3(0.0f)
+                                        : normal_matrix * glm::vec3(m.normals[i * 3],
+                                                                    m.normals[i * 3 + 1],
+                                                                    m.normals[i * 3 + 2]);
+        v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
+      }
+      ClipVertex clipped[6];
+      const int n = clip_near(v, clipped);
+      for (int c = 0; c < n; ++c) {
+        ScreenTriangle s;
+        s.data = inst.data;
+        for (int k = 0; k < 3; ++k) {
+          const ClipVertex& cv = clipped[c * 3 + k];
+          const double w = cv.clip.w;
+          s.p[k] = glm::dvec2((cv.clip.x / w * 0.5 + 0.5) * f.width,
+                              (cv.clip.y / w * 0.5 + 0.5) * f.height);
+          s.inv_w[k] = 1.0 / w;
+          s.depth[k] = cv.clip.z / w * 0.5 + 0.5;
+          s.v[k] = cv;
+        }
+        const double area = edge(s.p[0], s.p[1], s.p[2]);
+        if (area == 0.0) continue;
+        s.front = area > 0.0;
+        if ((pass.cull == CullMode::Back && !s.front) || (pass.cull == CullMode::Front && s.front))
+          continue;
+        if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one case
+          std::swap(s.p[1], s.p[2]);
+          std::swap(s.inv_w[1], s.inv_w[2]);
+          std::swap(s.depth[1], s.depth[2]);
+          std::swap(s.v[1], s.v[2]);
+        }
+        out.push_back(s);
+      }
+    }
+  }
+  return out;
+}
+
+struct MeshTargets {
+  ImageRGBA* colour;
+  ImageRGBA* depth;  // null: none
+  bool test, write_depth;
+};
+
+void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int height,
+               const MeshTargets& out) {
+  // The tile in window coordinates (rows flipped: image row y is window row height - 1 - y).
+  const double lo_x = std::max(double(t.x0), std::min({s.p[0].x, s.p[1].x, s.p[2].x}) - 0.5);
+  const double hi_x = std::min(double(t.x1 - 1), std::max({s.p[0].x, s.p[1].x, s.p[2].x}) - 0.5);
+  const double lo_y = std::max(double(height - t.y1), std::min({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
+  const double hi_y =
+      std::min(double(height - 1 - t.y0), std::max({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
+  const double area = edge(s.p[0], s.p[1], s.p[2]);
+  for (int wy = int(std::ceil(lo_y)); wy <= int(std::floor(hi_y)); ++wy)
+    for (int wx = int(std::ceil(lo_x)); wx <= int(std::floor(hi_x)); ++wx) {
+      const glm::dvec2 p(wx + 0.5, wy + 0.5);
+      double b[3];
+      bool inside = true;
+      for (int k = 0; k < 3 && inside; ++k) {
+        const glm::dvec2& a = s.p[(k + 1) % 3];
+        const glm::dvec2& c = s.p[(k + 2) % 3];
+        b[k] = edge(a, c, p);
+        inside = b[k] > 0.0 || (b[k] == 0.0 && top_left(a, c));
+      }
+      if (!inside) continue;
+      const double l0 = b[0] / area, l1 = b[1] / area, l2 = b[2] / area;
+      const float z = float(l0 * s.depth[0] + l1 * s.depth[1] + l2 * s.depth[2]);
+      if (z < 0.0f || z > 1.0f) continue;  // outside the near/far range, as GL clips
+      const int x = wx, y = height - 1 - wy;
+      if (out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
+      // Perspective-correct varyings.
+      const double q0 = l0 * s.inv_w[0], q1 = l1 * s.inv_w[1], q2 = l2 * s.inv_w[2];
+      const double qs = q0 + q1 + q2;
+      const float w0 = float(q0 / qs), w1 = float(q1 / qs), w2 = float(q2 / qs);
+      MeshFragment frag;
+      frag.world_position = s.v[0].world * w0 + s.v[1].world * w1 + s.v[2].world * w2;
+      frag.world_normal = s.v[0].normal * w0 + s.v[1].normal * w1 + s.v[2].normal * w2;
+      frag.uv = s.v[0].uv * w0 + s.v[1].uv * w1 + s.v[2].uv * w2;
+      frag.instance_data = s.data;
+      frag.front_facing = s.front;
+      const glm::vec4 c = pass.shade(frag);
+      if (c.a < pass.alpha_cutoff) continue;
+      if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+      float* px = out.colour->at(x, y);
+      px[0] = c.r;
+      px[1] = c.g;
+      px[2] = c.b;
+      px[3] = c.a;
+    }
+}
+
+}  // namespace
+
+void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
+  if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
+  if (!pass.shade) throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
+  MeshTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
+  if (!pass.depth.empty()) {
+    out.depth = &targets.get(pass.depth, pass.name);
+    out.test = pass.depth_test != DepthTest::Off;
+    out.write_depth = pass.depth_test != DepthTest::TestOnly;
+  }
+  const std::vector<ScreenTriangle> triangles = setup(pass, pc);
+  const FrameContext& f = pc.frame;
+  for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
+    for (const ScreenTriangle& s : triangles) rasterise(s, pass, t, f.height, out);
+  });
+}
+
+}  // namespace sdfreel

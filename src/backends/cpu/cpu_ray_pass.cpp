@@ -1,0 +1,99 @@
+#include "backends/cpu/cpu_ray_pass.h"
+
+#include <stdexcept>
+#include <vector>
+
+#include "render/tiling.h"
+
+namespace sdfreel {
+
+namespace {
+
+struct RayPassTargets {
+  ImageRGBA* colour;
+  ImageRGBA* depth;  // null: none
+  bool test, write_depth;
+};
+
+// One ray's result into the targets, as GL's fragment stage would: discard, depth test, writes.
+void store(const RayPassTargets& t, int x, int y, const glm::vec3& colour, float depth, bool keep) {
+  if (!keep) return;
+  if (t.depth) {
+    float* d = t.depth->at(x, y);
+    if (t.test && !(depth < d[0])) return;
+    if (t.write_depth) d[0] = depth;
+  }
+  float* p = t.colour->at(x, y);
+  p[0] = colour.x;
+  p[1] = colour.y;
+  p[2] = colour.z;
+  p[3] = 1.0f;
+}
+
+void tile_scalar(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
+                 const RayPassTargets& out, RayStats& stats) {
+  const FrameContext& f = pc.frame;
+  for (int y = t.y0; y < t.y1; ++y)
+    for (int x = t.x0; x < t.x1; ++x) {
+      const glm::vec3 dir = primary_ray_dir(f.camera, float(x) + pc.offset.x,
+                                            float(y) + pc.offset.y, f.width, f.height);
+      glm::vec3 colour(0.0f);
+      float depth = 1.0f;
+      bool keep = false;
+      pass.scalar(Ray{f.camera.origin, dir, pc.pixel_angle}, colour, depth, keep, stats);
+      store(out, x, y, colour, depth, keep);
+    }
+}
+
+// The tile's pixels in row order, eight at a time (the last packet padded with its last ray).
+void tile_packets(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
+                  const RayPassTargets& out, RayStats& stats) {
+  const FrameContext& f = pc.frame;
+  const int tw = t.x1 - t.x0, n = tw * (t.y1 - t.y0);
+  RayPacket packet;
+  packet.origin = f.camera.origin;
+  packet.pixel_angle = pc.pixel_angle;
+  RayPassOutput result;
+  for (int base = 0; base < n; base += LANES) {
+    packet.count = n - base < LANES ? n - base : LANES;
+    for (int i = 0; i < LANES; ++i) {
+      const int k = base + (i < packet.count ? i : packet.count - 1);
+      const float x = float(t.x0 + k % tw) + pc.offset.x, y = float(t.y0 + k / tw) + pc.offset.y;
+      packet.dir.set_lane(i, primary_ray_dir(f.camera, x, y, f.width, f.height));
+      result.keep[i] = false;
+      result.depth[i] = 1.0f;
+    }
+    pass.packet(packet, result, stats);
+    for (int i = 0; i < packet.count; ++i) {
+      const int k = base + i;
+      store(out, t.x0 + k % tw, t.y0 + k / tw, result.colour[i], result.depth[i], result.keep[i]);
+    }
+  }
+}
+
+}  // namespace
+
+void run_ray_pass(const RayPass& pass, const CpuPassContext& pc, CpuTargets& targets,
+                  RayStats& stats) {
+  // Packets unless asked for single rays (and the pass has them), or the pass has no packet code.
+  const bool packets = pass.packet && (pc.packets || !pass.scalar);
+  if (!packets && !pass.scalar)
+    throw std::runtime_error("ray pass '" + pass.name + "' has no CPU code");
+  RayPassTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
+  if (!pass.depth.empty()) {
+    out.depth = &targets.get(pass.depth, pass.name);
+    out.test = pass.depth_test != DepthTest::Off;
+    out.write_depth = pass.depth_test != DepthTest::TestOnly;
+  }
+  const FrameContext& f = pc.frame;
+  std::vector<RayStats> tile_stats(size_t(tile_count(f.width, f.height, pc.tile_size)));
+  for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
+    if (packets)
+      tile_packets(pass, pc, t, out, tile_stats[size_t(t.index)]);
+    else
+      tile_scalar(pass, pc, t, out, tile_stats[size_t(t.index)]);
+  });
+  for (const RayStats& s : tile_stats) stats.add(s);
+}
+
+}  // namespace sdfreel

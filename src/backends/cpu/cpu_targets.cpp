@@ -1,0 +1,36 @@
+#include "backends/cpu/cpu_targets.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sdfreel {
+
+CpuTargets::CpuTargets(const std::vector<TargetSpec>& specs, int width, int height)
+    : specs_(specs) {
+  for (const TargetSpec& s : specs_)
+    if (!images_.emplace(s.name, ImageRGBA(width, height)).second)
+      throw std::runtime_error("frame plan: target '" + s.name + "' declared twice");
+}
+
+void CpuTargets::clear() {
+  for (const TargetSpec& s : specs_) {
+    const glm::vec4 c = s.kind == TargetKind::Depth ? glm::vec4(1.0f) : s.clear;
+    std::vector<float>& px = images_.at(s.name).pixels;
+    for (size_t i = 0; i < px.size(); i += 4) {
+      px[i] = c.x;
+      px[i + 1] = c.y;
+      px[i + 2] = c.z;
+      px[i + 3] = c.w;
+    }
+  }
+}
+
+ImageRGBA& CpuTargets::get(const std::string& name, const std::string& pass) {
+  const auto it = images_.find(name);
+  if (it == images_.end())
+    throw std::runtime_error("frame plan: pass '" + pass + "' names target '" + name +
+                             "', which the plan does not declare");
+  return it->second;
+}
+
+}  // namespace sdfreel

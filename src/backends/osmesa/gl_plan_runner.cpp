@@ -1,0 +1,164 @@
+#include "backends/osmesa/gl_plan_runner.h"
+
+#include <stdexcept>
+
+#include "backends/osmesa/frame_uniforms.h"
+#include "render/camera_model.h"
+
+namespace sdfreel {
+
+namespace {
+
+constexpr const char* FULL_SCREEN_VERTEX = "common/fullscreen.vert";
+constexpr const char* SUM_COLOUR = "sum.colour";  // not names a plan can declare: they have a dot
+constexpr const char* SUM_EVALS = "sum.sdf_evals";
+
+ShaderUniform matrix(const std::string& name, const glm::mat4& m) {
+  ShaderUniform u{name, 16, {}};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) u.values.push_back(m[c][r]);
+  return u;
+}
+
+// The frame's uniforms for one sample: its offset alone (sample loops run once), the camera model
+// with the projection moved by that offset.
+std::vector<ShaderUniform> sample_uniforms(const FrameContext& ctx, const CameraModel& cam,
+                                           glm::vec2 offset) {
+  std::vector<ShaderUniform> u = frame_uniforms(ctx);
+  for (ShaderUniform& v : u) {
+    if (v.name == "u_sample_offsets") v.values = {offset.x, offset.y};
+    if (v.name == "u_sample_count" || v.name == "u_inv_samples") v.values = {1.0f};
+  }
+  u.push_back({"u_sample_offset", 2, {offset.x, offset.y}});
+  u.push_back(matrix("u_view", cam.view));
+  u.push_back(matrix("u_projection", sample_projection(cam, offset, ctx.width, ctx.height)));
+  u.push_back({"u_near_plane", 1, {cam.near_plane}});
+  u.push_back({"u_depth_scale", 1, {cam.depth_scale}});
+  return u;
+}
+
+DepthMode depth_mode(const std::string& target, DepthTest test) {
+  if (target.empty()) return DepthMode::Off;
+  if (test == DepthTest::Off) return DepthMode::Always;
+  return test == DepthTest::TestOnly ? DepthMode::TestOnly : DepthMode::TestAndWrite;
+}
+
+GlCull gl_cull(CullMode c) {
+  return c == CullMode::None ? GlCull::None : c == CullMode::Back ? GlCull::Back : GlCull::Front;
+}
+
+void append(std::vector<ShaderUniform>& to, const std::vector<ShaderUniform>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+GlProgramId GlPlanRunner::program(const std::string& vertex, const std::string& fragment) {
+  const std::string key = vertex + "|" + fragment;
+  const auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  const GlProgramId id = driver_.compile({vertex, fragment, ""});
+  programs_[key] = id;
+  return id;
+}
+
+GlMeshId GlPlanRunner::mesh(const std::shared_ptr<const TriangleMesh>& m) {
+  if (!m) throw std::runtime_error("a mesh pass has no mesh");
+  const auto it = meshes_.find(m);
+  if (it != meshes_.end()) return it->second;
+  return meshes_[m] = driver_.create_mesh(*m);
+}
+
+void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
+                            const std::vector<ShaderUniform>& base) {
+  GlPass p;
+  p.name = pass_name(pass);
+  p.clear = false;
+  p.uniforms = base;
+  if (const auto* ray = std::get_if<RayPass>(&pass)) {
+    const std::string& shader = ray->shader.empty() ? scene.shader : ray->shader;
+    p.program = program(FULL_SCREEN_VERTEX, shader);
+    std::vector<std::string> outputs = {ray->colour};
+    if (!ray->sdf_evals.empty()) outputs.push_back(ray->sdf_evals);
+    p.target = targets_.framebuffer(outputs, ray->depth, p.name);
+    p.depth = depth_mode(ray->depth, ray->depth_test);
+    append(p.uniforms, scene.uniforms);
+    append(p.uniforms, ray->uniforms);
+    p.textures = scene.textures;
+  } else if (const auto* m = std::get_if<MeshPass>(&pass)) {
+    p.program = program(m->vertex, m->fragment);
+    p.mesh = mesh(m->mesh);
+    std::vector<float> instances;
+    for (const MeshInstance& i : m->instances) {
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) instances.push_back(i.model[c][r]);
+      instances.insert(instances.end(), {i.data.x, i.data.y, i.data.z, i.data.w});
+    }
+    driver_.set_instances(p.mesh, instances);
+    p.instances = int(m->instances.size());
+    p.target = targets_.framebuffer({m->colour}, m->depth, p.name);
+    p.depth = depth_mode(m->depth, m->depth_test);
+    p.cull = gl_cull(m->cull);
+    p.uniforms.push_back({"u_alpha_cutoff", 1, {m->alpha_cutoff}});
+    append(p.uniforms, scene.uniforms);
+    append(p.uniforms, m->uniforms);
+    p.textures = scene.textures;
+  } else {
+    const ImagePass& img = std::get<ImagePass>(pass);
+    p.program = program(FULL_SCREEN_VERTEX, img.shader);
+    for (const ImageInput& in : img.inputs) {
+      if (in.target == img.output)
+        throw std::runtime_error("image pass '" + img.name + "' reads its own output '" +
+                                 img.output + "'");
+      p.textures.push_back({in.sampler, targets_.texture(in.target, img.name)});
+    }
+    p.target = targets_.framebuffer({img.output}, "", p.name);
+    append(p.uniforms, img.uniforms);
+  }
+  driver_.run(p);
+}
+
+void GlPlanRunner::accumulate() {
+  GlPass p;
+  p.name = "accumulate samples";
+  p.program = program(FULL_SCREEN_VERTEX, "common/accumulate.glsl");
+  p.target = targets_.framebuffer({SUM_COLOUR, SUM_EVALS}, "", p.name);
+  p.clear = false;
+  p.blend = BlendMode::Add;
+  p.textures = {{"u_colour", targets_.texture(COLOUR_TARGET, p.name)},
+                {"u_sdf_evals", targets_.texture(SDF_EVALS_TARGET, p.name)}};
+  driver_.run(p);
+}
+
+ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
+                            const GlSceneInputs& scene, RayStats& stats) {
+  std::vector<TargetSpec> specs = plan_targets(plan);
+  specs.push_back({SUM_COLOUR, TargetKind::Colour, glm::vec4(0.0f)});
+  specs.push_back({SUM_EVALS, TargetKind::Colour, glm::vec4(0.0f)});
+  targets_.prepare(specs, ctx.width, ctx.height);
+  const CameraModel cam =
+      make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
+  targets_.clear(SUM_COLOUR);
+  targets_.clear(SUM_EVALS);
+  for (const glm::vec2& offset : ctx.sample_offsets) {
+    for (size_t i = 0; i + 2 < specs.size(); ++i) targets_.clear(specs[i].name);
+    const std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, offset);
+    for (const Pass& pass : plan.passes) run_pass(pass, scene, base);
+    accumulate();
+  }
+  ImageRGBA img = driver_.read_rgba(targets_.framebuffer({SUM_COLOUR}, "", "read back"));
+  const ImageRGBA evals = driver_.read_rgba(targets_.framebuffer({SUM_EVALS}, "", "read back"));
+  // Times 1 / count as on the CPU; alpha is coverage, 1. Evaluation counts are exact integers in
+  // float (below 2^24 a pixel).
+  const float inv_samples = 1.0f / float(ctx.sample_offsets.size());
+  for (size_t i = 0; i < img.pixels.size(); i += 4) {
+    img.pixels[i] *= inv_samples;
+    img.pixels[i + 1] *= inv_samples;
+    img.pixels[i + 2] *= inv_samples;
+    img.pixels[i + 3] = 1.0f;
+    stats.sdf_evals += uint64_t(evals.pixels[i]);
+  }
+  return img;
+}
+
+}  // namespace sdfreel

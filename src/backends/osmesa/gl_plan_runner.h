@@ -1,0 +1,48 @@
+#pragma once
+// Runs a frame plan (render/frame_plan.h) on the GL driver: per sample offset, in list order, the
+// targets are cleared and every pass drawn in plan order (ray and image passes as full-screen
+// passes, mesh passes as instanced meshes); then one full-screen draw adds the sample's "colour"
+// and "sdf_evals" into float sum targets (blend ONE + ONE: one IEEE add a channel, samples in list
+// order, the CPU's order). The frame is the sum read back times 1 / count, on the host as on the
+// CPU.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backends/osmesa/gl_driver.h"
+#include "backends/osmesa/gl_targets.h"
+#include "render/frame_context.h"
+#include "render/frame_plan.h"
+
+namespace sdfreel {
+
+// What the scene adds to every pass: its shader (for ray passes that name none), its per-frame
+// uniforms and textures.
+struct GlSceneInputs {
+  std::string shader;
+  std::vector<ShaderUniform> uniforms;
+  std::vector<GlTextureBinding> textures;
+};
+
+class GlPlanRunner {
+ public:
+  explicit GlPlanRunner(GlDriver& driver) : driver_(driver), targets_(driver.gl()) {}
+  ImageRGBA run(const FramePlan& plan, const FrameContext& ctx, const GlSceneInputs& scene,
+                RayStats& stats);
+  // Compiles (once) the program of a pass, for warm-up and error messages before the first frame.
+  GlProgramId program(const std::string& vertex, const std::string& fragment);
+
+ private:
+  GlMeshId mesh(const std::shared_ptr<const TriangleMesh>& m);
+  void run_pass(const Pass& pass, const GlSceneInputs& scene,
+                const std::vector<ShaderUniform>& base);
+  void accumulate();
+
+  GlDriver& driver_;
+  GlTargets targets_;
+  std::map<std::string, GlProgramId> programs_;                     // by "vertex|fragment"
+  std::map<std::shared_ptr<const TriangleMesh>, GlMeshId> meshes_;  // owns: pointers stay unique
+};
+
+}  // namespace sdfreel

@@ -1,0 +1,134 @@
+#pragma once
+// A frame as a small plan of passes over named targets, run by both backends (CPU:
+// backends/cpu/plan_runner, GL: backends/osmesa/gl_plan_runner).
+//
+// Targets are frame-sized images: colour targets (RGBA float) and depth targets (window depth in
+// channel 0, the convention of camera_model.h, cleared to 1). Every plan has three built-in
+// targets: "colour" (the frame's output), "depth", and "sdf_evals" (x = SDF evaluations of the
+// pixel's sample, for the bench; it used to ride in alpha).
+//
+// Sub-pixel samples mean the same for every pass kind: the whole plan runs once per sample offset
+// of FrameContext::sample_offsets (ray passes trace through pixel + offset, mesh passes use the
+// projection moved by the same offset), and the frame is the sum of the samples' "colour" in list
+// order times 1 / count. On GL the sum is a float add-blend of each sample into an accumulation
+// target, one draw per sample in list order, so it adds the same numbers in the same order as the
+// CPU loop.
+#include <functional>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "render/image.h"
+#include "render/rays.h"
+#include "render/shader_inputs.h"
+#include "render/triangle_mesh.h"
+
+namespace sdfreel {
+
+constexpr const char* COLOUR_TARGET = "colour";
+constexpr const char* DEPTH_TARGET = "depth";
+constexpr const char* SDF_EVALS_TARGET = "sdf_evals";
+
+enum class TargetKind { Colour, Depth };
+
+struct TargetSpec {
+  std::string name;
+  TargetKind kind = TargetKind::Colour;
+  glm::vec4 clear{0.0f};  // colour targets; depth targets clear to 1
+};
+
+enum class DepthTest { Off, TestAndWrite, TestOnly };  // LESS when on
+enum class CullMode { None, Back, Front };             // front: counter-clockwise as seen
+
+// What a ray pass's CPU code returns for up to eight rays. keep[i] false discards lane i (nothing
+// written, as GLSL's discard); depth is window depth, read only when the pass has a depth target.
+struct RayPassOutput {
+  glm::vec3 colour[LANES];
+  float depth[LANES];
+  bool keep[LANES];
+};
+
+// A per-pixel function of a primary ray: what scenes were before plans. CPU: `packet` on packets
+// of eight from the eye (and `scalar`, one ray, for SDFREEL_SIMD=0), bit-identical to each other.
+// GL: `shader`, a fragment file that includes common/sample_loop.glsl ("" = SceneInfo::shader).
+struct RayPass {
+  std::string name;
+  std::string colour = COLOUR_TARGET;
+  std::string sdf_evals = SDF_EVALS_TARGET;  // "" = not counted
+  std::string depth;                         // "" = no depth written or tested
+  DepthTest depth_test = DepthTest::Off;
+  std::string shader;
+  std::vector<ShaderUniform> uniforms;
+  std::function<void(const RayPacket&, RayPassOutput&, RayStats&)> packet;
+  std::function<void(const Ray&, glm::vec3& colour, float& depth, bool& keep, RayStats&)> scalar;
+};
+
+// Instances of a triangle mesh: each draws the mesh with its model matrix; `data` is a free vec4
+// per instance (colour, material id, shell index...), attribute 7 on GL.
+struct MeshInstance {
+  glm::mat4 model{1.0f};
+  glm::vec4 data{0.0f};
+};
+
+// Varyings of a mesh pass's shading function, per covered sample.
+struct MeshFragment {
+  glm::vec3 world_position, world_normal;  // normal interpolated, not normalised
+  glm::vec2 uv;
+  glm::vec4 instance_data;
+  bool front_facing;
+};
+
+// Triangles with depth test and write, cull mode and alpha discard (alpha < alpha_cutoff is
+// discarded). CPU: `shade` per covered sample. GL: `vertex` and `fragment` shader files.
+struct MeshPass {
+  std::string name;
+  std::shared_ptr<const TriangleMesh> mesh;  // shared: backends cache their copy by this pointer
+  std::vector<MeshInstance> instances{MeshInstance{}};
+  std::string colour = COLOUR_TARGET;
+  std::string depth = DEPTH_TARGET;
+  DepthTest depth_test = DepthTest::TestAndWrite;
+  CullMode cull = CullMode::Back;
+  float alpha_cutoff = 0.0f;
+  std::string vertex = "common/mesh.vert", fragment;
+  std::vector<ShaderUniform> uniforms;
+  std::function<glm::vec4(const MeshFragment&)> shade;
+};
+
+// The images an image pass reads, in the order of ImagePass::inputs.
+struct ImageInputs {
+  std::vector<const ImageRGBA*> images;
+  const ImageRGBA& operator[](size_t i) const { return *images[i]; }
+};
+
+// A pixel function of other targets (post-processing, compositing): output(x, y) from the inputs,
+// pixels independent of each other so threads never change bits. GL: a full-screen pass of
+// `shader`, each input bound to its sampler (read with texelFetch), image row 0 at the top as on
+// the CPU (the shader flips gl_FragCoord.y).
+struct ImageInput {
+  std::string target;
+  std::string sampler;
+};
+struct ImagePass {
+  std::string name;
+  std::vector<ImageInput> inputs;
+  std::string output = COLOUR_TARGET;  // never one of the inputs
+  std::string shader;
+  std::vector<ShaderUniform> uniforms;
+  std::function<glm::vec4(const ImageInputs&, int x, int y)> pixel;
+};
+
+using Pass = std::variant<RayPass, MeshPass, ImagePass>;
+
+struct FramePlan {
+  std::vector<TargetSpec> targets;  // besides the built-in colour, depth and sdf_evals
+  std::vector<Pass> passes;         // run in order, once per sample
+  float near_plane = 0.05f, far_plane = 500.0f;
+};
+
+// The targets of `plan`: the built-ins, then the plan's own.
+std::vector<TargetSpec> plan_targets(const FramePlan& plan);
+const std::string& pass_name(const Pass& pass);
+
+}  // namespace sdfreel
