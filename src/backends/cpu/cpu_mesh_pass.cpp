@@ -74,15 +74,14 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
       ClipVertex v[3];
       for (int k = 0; k < 3; ++k) {
         const unsigned i = m.index(t * 3 + size_t(k));
-        const glm::vec4 world =
-            inst.model * glm::vec4(m.positions[i * 3], m.positions[i * 3 + 1],
-                                   m.positions[i * 3 + 2], 1.0f);
+        const glm::vec4 world = inst.model * glm::vec4(m.positions[i * 3], m.positions[i * 3 + 1],
+                                                       m.positions[i * 3 + 2], 1.0f);
         v[k].world = glm::vec3(world);
         v[k].clip = view_proj * world;
-        v[k].normal = m.normals.empty() ? glm::vec3(0.0f)
-                                        : normal_matrix * glm::vec3(m.normals[i * 3],
-                                                                    m.normals[i * 3 + 1],
-                                                                    m.normals[i * 3 + 2]);
+        v[k].normal = m.normals.empty()
+                          ? glm::vec3(0.0f)
+                          : normal_matrix * glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
+                                                      m.normals[i * 3 + 2]);
         v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
       }
       ClipVertex clipped[6];
@@ -104,7 +103,8 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
         s.front = area > 0.0;
         if ((pass.cull == CullMode::Back && !s.front) || (pass.cull == CullMode::Front && s.front))
           continue;
-        if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one case
+        if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one
+                         // case
           std::swap(s.p[1], s.p[2]);
           std::swap(s.inv_w[1], s.inv_w[2]);
           std::swap(s.depth[1], s.depth[2]);
@@ -128,7 +128,8 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
   // The tile in window coordinates (rows flipped: image row y is window row height - 1 - y).
   const double lo_x = std::max(double(t.x0), std::min({s.p[0].x, s.p[1].x, s.p[2].x}) - 0.5);
   const double hi_x = std::min(double(t.x1 - 1), std::max({s.p[0].x, s.p[1].x, s.p[2].x}) - 0.5);
-  const double lo_y = std::max(double(height - t.y1), std::min({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
+  const double lo_y =
+      std::max(double(height - t.y1), std::min({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
   const double hi_y =
       std::min(double(height - 1 - t.y0), std::max({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
   const double area = edge(s.p[0], s.p[1], s.p[2]);
