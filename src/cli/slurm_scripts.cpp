@@ -13,6 +13,13 @@ std::string common_directives(const SlurmJob& job) {
   return s;
 }
 
+// For comment lines: a control character (a newline in a file name) would end the comment.
+std::string printable(std::string s) {
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < ' ' || c == 127) c = '?';
+  return s;
+}
+
 }  // namespace
 
 std::string slurm_dir(const SlurmJob& job) {
@@ -37,7 +44,8 @@ std::string shell_quote(const std::string& s) {
 std::string render_script(const SlurmJob& job) {
   const std::string n = std::to_string(job.tasks);
   std::string s = "#!/bin/sh\n";
-  s += "# Written by `sdfreel slurm`: renders " + job.timeline + ", one shard per array task.\n";
+  s += "# Written by `sdfreel slurm`: renders " + printable(job.timeline) +
+       ", one shard per array task.\n";
   s += "#SBATCH --job-name=sdfreel-" + job.name + "\n";
   s += "#SBATCH --array=0-" + std::to_string(job.tasks - 1) + "\n";
   // One log per task; appended to, so a requeued task's log keeps the earlier attempt.
@@ -58,7 +66,7 @@ std::string render_script(const SlurmJob& job) {
 
 std::string encode_script(const SlurmJob& job) {
   std::string s = "#!/bin/sh\n";
-  s += "# Written by `sdfreel slurm`: encodes " + job.out_dir + "/" + job.video +
+  s += "# Written by `sdfreel slurm`: encodes " + printable(job.out_dir + "/" + job.video) +
        " once every render task succeeded.\n";
   s += "#SBATCH --job-name=sdfreel-" + job.name + "-encode\n";
   s += "#SBATCH --output=" + logs_dir(job) + "/encode.log\n";
