@@ -16,6 +16,7 @@ fail() {
 tmp=$(mktemp -d)
 cluster=$tmp/cluster
 trap '"$src/scripts/slurm-local.sh" stop "$cluster"; rm -rf "$tmp"' EXIT
+trap 'exit 1' INT TERM  # ctest's timeout, ^C: still stop the daemons
 "$src/scripts/slurm-local.sh" start "$cluster" || fail "cannot start the cluster"
 . "$cluster/env"
 
