@@ -1,5 +1,6 @@
 #include "cli/slurm_job.h"
 
+#include <cctype>
 #include <filesystem>
 #include <regex>
 

@@ -2,6 +2,7 @@
 // fake sbatch, and bad options. tests/slurm/ submits to a real Slurm.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <sstream>
