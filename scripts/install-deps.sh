@@ -8,6 +8,7 @@ packages=(
   libosmesa6-dev libtomlplusplus-dev libcli11-dev libfmt-dev libtbb-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   ffmpeg   # tests only: stock ffmpeg/ffprobe check our framemd5 and stream tags
+  file dpkg-dev   # cpack -G DEB: dpkg-shlibdeps derives the package's library dependencies
 )
 missing=()
 for p in "${packages[@]}"; do
