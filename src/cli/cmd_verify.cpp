@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands_impl.h"
+#include "cli/manifest_input.h"
 #include "cli/output_folder.h"
 #include "io/frame_files.h"
 #include "io/manifest.h"
@@ -28,8 +29,7 @@ ImageRGB16 diff_image(const ImageRGB16& a, const ImageRGB16& b) {
 }
 
 int run_verify(const VerifyOptions& o) {
-  const auto manifest = read_manifest(o.manifest);
-  if (!manifest) throw UsageError("cannot read manifest " + o.manifest);
+  const std::optional<Manifest> manifest = read_manifest_argument(o.manifest);
   Timeline tl = load_with_overrides(o.render);
   FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads));
   const ManifestHeader header = manifest_header(tl, pipe.backend());

@@ -3,6 +3,7 @@
 // errors are InputError with file:line:column.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,11 +33,19 @@ struct CameraKey {
   CameraPose pose;
 };
 
+struct CameraPathTables;  // curves and arc-length table built from the keys (camera_path.cpp)
+
 struct CameraPath {
   Interp interp = Interp::CatmullRom;
   bool constant_speed = false;        // speed = "constant": arc-length re-parameterisation
   std::vector<CameraKey> keys;        // empty: the scene's default camera
+  // Builds the curves and the arc-length table once (the parser calls it); call again after
+  // changing the fields. Without it, sample() builds them for every call.
+  void prepare();
   CameraPose sample(double t, const CameraPose& fallback) const;
+
+ private:
+  std::shared_ptr<const CameraPathTables> tables_;  // shared by copies: read-only
 };
 
 struct ParamTrack {
