@@ -49,8 +49,11 @@ void append_journal(const std::string& dir, const std::string& key, const Manife
 void merge_journal(const std::string& dir, const std::string& key, Manifest& m) {
   const std::optional<std::string> text =
       read_regular_file(dir + "/manifest.journal", kMaxManifestBytes);
-  if (!text) return;
-  std::istringstream in(*text);
+  if (text) merge_journal_text(*text, key, m);
+}
+
+void merge_journal_text(const std::string& text, const std::string& key, Manifest& m) {
+  std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
     if (in.eof()) break;  // no final newline: torn by a kill, never trusted

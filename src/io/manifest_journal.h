@@ -17,6 +17,8 @@ std::string render_key(const ManifestHeader& header);
 void append_journal(const std::string& dir, const std::string& key, const ManifestFrame& frame);
 // Adds the journal's frames of render `key` to m.frames (indices outside the timeline skipped).
 void merge_journal(const std::string& dir, const std::string& key, Manifest& m);
+// The same on the journal's bytes (fuzzing uses it).
+void merge_journal_text(const std::string& text, const std::string& key, Manifest& m);
 // Empties the journal (after its frames went into manifest.json).
 void clear_journal(const std::string& dir);
 

@@ -86,7 +86,11 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
 }  // namespace
 
 Timeline load_timeline(const std::string& path, const ColorChecker* color) {
-  const std::string text = read_file(path);
+  return parse_timeline(path, read_file(path), color);
+}
+
+Timeline parse_timeline(const std::string& path, const std::string& text,
+                        const ColorChecker* color) {
   if (std::optional<TextPosition> bad = find_invalid_utf8(text))
     throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
 

@@ -97,6 +97,9 @@ struct ColorChecker {
 
 // Reads, parses and validates a timeline file. Throws InputError on any bad input (spec's list).
 Timeline load_timeline(const std::string& path, const ColorChecker* color);
+// The same on the file's bytes already in memory (`path` names it in messages; fuzzing uses it).
+Timeline parse_timeline(const std::string& path, const std::string& text,
+                        const ColorChecker* color);
 
 // Validates a timeline after command-line overrides (resolution, samples, codec size rules).
 // Throws InputError with the timeline path (line/column 0).
