@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const int which = data[0] % 3;
   const int count = 1 + (data[0] >> 2) * 97;  // up to ~6000 frames: keeps each run fast
   const std::string spec(reinterpret_cast<const char*>(data + 1), size - 1);
-  std::vector<int> all(size_t(count));
+  std::vector<int> all(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) all[size_t(i)] = i;
   try {
     if (which == 0) {

@@ -40,7 +40,7 @@ for t in "${targets[@]}"; do
     -print_final_stats=1 -artifact_prefix=build-fuzz/findings/"$t"- "$corpus" \
     >build-fuzz/"$t".log 2>&1 || status=$?
   # Executions and coverage reached (cov: edges, ft: features), and any finding.
-  grep -E "^#[0-9]+ +(INITED|DONE)|stat::number_of_executed_units|ERROR|SUMMARY|Test unit written" \
+  grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)|stat::number_of_executed_units|ERROR|SUMMARY|Test unit written" \
     build-fuzz/"$t".log >&2 || true
   if ((status != 0)); then
     echo "$t: FAILED (exit $status); reproducer in build-fuzz/findings/" >&2

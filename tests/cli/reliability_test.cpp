@@ -58,7 +58,7 @@ TEST(Reliability, KilledRendersTemporaryVideoIsCleanedAtStartUp) {
   const RunResult killed =
       run("'" + sdfreel_binary() + "' render t.toml 2>/dev/null & pid=$!; " +
               "for i in $(seq 600); do n=$(ls -a out 2>/dev/null | grep -c 'small.*tmp'); " +
-              "[ \"$n\" -ge 1 ] && break; sleep 0.02; done; sleep 0.3; kill -9 $pid; wait $pid; "
+              "[ \"$n\" -ge 1 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; "
               "echo $?",
           dir);
   ASSERT_EQ(killed.out, "137\n") << "the render was not killed mid-run";
