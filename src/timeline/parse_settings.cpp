@@ -132,6 +132,8 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");
     if (tl.out_dir.empty()) r.fail(*n, "output.dir must not be empty");
+    if (std::string problem = check_path_text("output.dir", tl.out_dir); !problem.empty())
+      r.fail(*n, problem);
   }
   if (const toml::node* n = output->get("frames")) {
     const toml::array& formats = r.array(*n, "output.frames");

@@ -3,6 +3,7 @@
 // errors are InputError with file:line:column.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,11 +33,19 @@ struct CameraKey {
   CameraPose pose;
 };
 
+struct CameraPathTables;  // curves and arc-length table built from the keys (camera_path.cpp)
+
 struct CameraPath {
   Interp interp = Interp::CatmullRom;
   bool constant_speed = false;        // speed = "constant": arc-length re-parameterisation
   std::vector<CameraKey> keys;        // empty: the scene's default camera
+  // Builds the curves and the arc-length table once (the parser calls it); call again after
+  // changing the fields. Without it, sample() builds them for every call.
+  void prepare();
   CameraPose sample(double t, const CameraPose& fallback) const;
+
+ private:
+  std::shared_ptr<const CameraPathTables> tables_;  // shared by copies: read-only
 };
 
 struct ParamTrack {
@@ -88,6 +97,9 @@ struct ColorChecker {
 
 // Reads, parses and validates a timeline file. Throws InputError on any bad input (spec's list).
 Timeline load_timeline(const std::string& path, const ColorChecker* color);
+// The same on the file's bytes already in memory (`path` names it in messages; fuzzing uses it).
+Timeline parse_timeline(const std::string& path, const std::string& text,
+                        const ColorChecker* color);
 
 // Validates a timeline after command-line overrides (resolution, samples, codec size rules).
 // Throws InputError with the timeline path (line/column 0).

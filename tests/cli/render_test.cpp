@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/harness.h"
+#include "io/manifest.h"
 
 namespace sdfreel::test {
 namespace {
@@ -118,22 +119,24 @@ TEST(Render, EncodeRefusesAFrameThatDiffersFromTheManifest) {
 TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
   const std::string dir = make_scratch_dir("render-kill");
   write_file(dir + "/t.toml", small_timeline(120));
-  // SIGKILL the render as soon as the manifest lists three frames: mid-run however fast the machine.
+  // SIGKILL the render as soon as three frames are listed (manifest.journal holds the frames
+  // finished since manifest.json was last rebuilt): mid-run however fast the machine.
   const RunResult killed = run(
       "'" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video & pid=$!; " +
-      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.json 2>/dev/null); " +
+      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.journal 2>/dev/null); " +
       "[ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
       dir);
   EXPECT_EQ(killed.out, "137\n") << "the render was not killed: " << killed.err;
-  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
-  ASSERT_LT(m["frames"].size(), 120u) << "render finished before the kill";
-  ASSERT_GE(m["frames"].size(), 3u);
+  const auto m = read_manifest(dir + "/out/manifest.json");
+  ASSERT_TRUE(m);
+  ASSERT_LT(m->frames.size(), 120u) << "render finished before the kill";
+  ASSERT_GE(m->frames.size(), 3u);
   // Every listed frame is on disk, complete and matches its hash; the resume finishes the job.
   const RunResult r = sdfreel("render t.toml --no-video --resume", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   size_t kept = 0;
   for (size_t pos = 0; (pos = r.err.find("kept", pos)) != std::string::npos; ++pos) ++kept;
-  EXPECT_EQ(kept, m["frames"].size());
+  EXPECT_EQ(kept, m->frames.size());
   for (const auto& entry : fs::directory_iterator(dir + "/out/frames")) {
     const std::string name = entry.path().filename().string();
     EXPECT_EQ(name.find("tmp"), std::string::npos) << "temporary file left: " << name;
