@@ -58,6 +58,7 @@ check_one() {
     [ -f "tests/golden/$name.framemd5" ] || continue
     local out=$dir/golden/$name
     rm -rf "$out"
+    mkdir -p "$dir/golden"
     "$dir/sdfreel" render "$toml" --out "$out" --no-video >"$out.log" 2>&1 ||
       { echo "RENDER FAILED: $dir $name (see $out.log)"; failed=1; continue; }
     local line=0
