@@ -9,9 +9,9 @@
 namespace sdfreel::test {
 namespace {
 
-// Renders tests/golden/NAME.toml with `backend` and compares with the committed hashes of
-// `golden_backend` (NAME.framemd5 for cpu, NAME.<backend>.framemd5 otherwise): a backend that is
-// bit-identical to the CPU backend is held to the CPU's file.
+// Renders tests/golden/SCENE/NAME.toml (name: "SCENE/NAME") with `backend` and compares with the
+// committed hashes of `golden_backend` (NAME.framemd5 for cpu, NAME.<backend>.framemd5 otherwise):
+// a backend that is bit-identical to the CPU backend is held to the CPU's file.
 void check_golden(const std::string& name, const std::string& backend,
                   const std::string& golden_backend) {
   const std::string dir = make_scratch_dir("golden-" + name + "-" + backend);
@@ -35,16 +35,16 @@ void check_golden(const std::string& name, const std::string& backend) {
 }
 
 TEST(Golden, SdfMorphCpu) {
-  check_golden("sdf_morph_small", "cpu");
+  check_golden("sdf_morph/small", "cpu");
 }
 
 TEST(Golden, LanternFestivalCpu) {
-  check_golden("lantern_festival_small", "cpu");
+  check_golden("lantern_festival/small", "cpu");
 }
 
 // The GLSL twin renders the same bits as the C++ scene: held to the CPU backend's hashes.
 TEST(Golden, LanternFestivalOsmesaMatchesCpuHashes) {
-  check_golden("lantern_festival_small", "osmesa", "cpu");
+  check_golden("lantern_festival/small", "osmesa", "cpu");
 }
 
 }  // namespace

@@ -135,19 +135,20 @@ TEST_F(SdfMorphBackends, MissingOsmesaLibraryIsAClearErrorNotACrash) {
 }
 
 TEST_F(SdfMorphBackends, ShaderErrorNamesFileAndLineAndExitsWithOne) {
-  // A copy of the shader folder whose sdf_morph.glsl has an undeclared name on a known line.
+  // A copy of the shader folder whose sdf_morph/sdf_morph.glsl has an undeclared name on a known
+  // line.
   const std::string shaders = dir + "/shaders";
   fs::copy(fs::path(SDFREEL_SOURCE_DIR) / "shaders", shaders, fs::copy_options::recursive);
-  std::string text = test::read_text(shaders + "/sdf_morph.glsl");
+  std::string text = test::read_text(shaders + "/sdf_morph/sdf_morph.glsl");
   int line = 1;
   for (char c : text) line += c == '\n';
   text += "float broken_on_purpose() { return undeclared_name; }\n";
-  test::write_text(shaders + "/sdf_morph.glsl", text);
+  test::write_text(shaders + "/sdf_morph/sdf_morph.glsl", text);
   const test::BinaryResult r =
       run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa",
                   "SDFREEL_SHADER_DIR='" + shaders + "' ");
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find(shaders + "/sdf_morph.glsl:" + std::to_string(line) + ":"),
+  EXPECT_NE(r.err.find(shaders + "/sdf_morph/sdf_morph.glsl:" + std::to_string(line) + ":"),
             std::string::npos)
       << r.err;
 }
