@@ -75,6 +75,20 @@ std::vector<ParamSpec> lantern_festival_params() {
   };
 }
 
+// Level with the horizon (rays along the lake that graze the crests, long cell walks), from just
+// above the water, and looking up (sky, reflections of nothing).
+std::vector<CameraPose> test_poses(const CameraPose& def) {
+  CameraPose level = def;
+  level.target = level.position + glm::dvec3(1.0, 0.0, 0.35);
+  level.fov_deg = 35.0;
+  CameraPose low = level;
+  low.position.y = -0.7;
+  low.target = low.position + glm::dvec3(-0.4, -0.01, 1.0);
+  CameraPose up = def;
+  up.target = up.position + glm::dvec3(0.2, 2.0, 0.5);
+  return {level, low, up};
+}
+
 }  // namespace lantern_festival
 
 SceneInfo lantern_festival_scene_info() {
@@ -88,6 +102,7 @@ SceneInfo lantern_festival_scene_info() {
   info.params = lantern_festival::lantern_festival_params();
   // Low over the water in the corridor between two columns of lanterns (see the default timeline).
   info.default_camera = CameraPose{{4.0, 0.5, -10.0}, {2.5, 0.1, 4.0}, 50.0, 0.0};
+  info.test_poses = lantern_festival::test_poses(info.default_camera);
   info.shader = "lantern_festival/lantern_festival.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new lantern_festival::LanternFestivalScene()); };
   return info;

@@ -42,6 +42,18 @@ ParamSpec colour(const char* name, std::vector<double> def, const char* doc) {
   return ParamSpec{name, 3, std::move(def), 0.0, 1.0, doc};
 }
 
+// Close-ups: the object fills the frame (relaxed marches, reflections of the pedestal and of the
+// mug's inside), and the pedestal's foot with the object's shadow on the floor.
+std::vector<CameraPose> test_poses(const CameraPose& def) {
+  CameraPose close = def;
+  close.position = close.target + (close.position - close.target) * 0.35;
+  close.fov_deg = 30.0;
+  CameraPose foot = def;
+  foot.position = glm::dvec3(-1.2, 0.5, -1.6);
+  foot.target = glm::dvec3(0.4, 0.1, 0.5);
+  return {close, foot};
+}
+
 }  // namespace
 
 SceneInfo sdf_morph_scene_info() {
@@ -68,6 +80,7 @@ SceneInfo sdf_morph_scene_info() {
              "scale of the studio: walls, soft boxes (reflections) and ambient light"),
   };
   info.default_camera = CameraPose{{0.0, 1.45, -3.4}, {0.0, 0.72, 0.0}, 40.0, 0.0};
+  info.test_poses = test_poses(info.default_camera);
   info.shader = "sdf_morph/sdf_morph.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new SdfMorphScene()); };
   return info;

@@ -1,16 +1,13 @@
-// End to end through the sdfreel binary: the osmesa backend renders sdf_morph deterministically
-// (repeated runs, LP_NUM_THREADS 1 and 2), agrees with the CPU backend on display values, names
-// Mesa in the manifest, and fails cleanly (exit 1, a message) without OSMesa or with a broken
-// shader.
+// The osmesa backend through the sdfreel binary, on a small sdf_morph timeline: it names Mesa in
+// the manifest, and fails cleanly (exit 1, a message) without OSMesa or with a broken shader.
+// (Agreement with the CPU backend and determinism, for every scene: agreement_test.cpp and
+// timeline_agreement_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "backends/osmesa/osmesa_platform.h"
-#include "io/frame_files.h"
-#include "osmesa/image_compare.h"
 #include "osmesa/run_binary.h"
 
 namespace sdfreel {
@@ -19,12 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_sdfreel;
 
-constexpr int FRAMES = 3;
-constexpr double MAX_MEAN_DIFF = 0.5;  // in 1/255 of display values
-constexpr double MAX_P999_DIFF = 4.0;
-
 // 160x90, 3 frames at 10 fps with a 0.5 s morph period: torus, half-way, mug; the camera moves.
-std::string agreement_timeline() {
+std::string small_timeline() {
   return "[video]\nscene = \"sdf_morph\"\nfps = 10\nduration = 0.3\nresolution = [160, 90]\n"
          "samples = 2\nquality = \"final\"\n\n"
          "[output]\ndir = \"out\"\nframes = [\"png\"]\nvideo = \"\"\n\n"
@@ -35,7 +28,7 @@ std::string agreement_timeline() {
          "]\n\n[params]\nmorph_period = 0.5\n";
 }
 
-class SdfMorphBackends : public ::testing::Test {
+class OsmesaCli : public ::testing::Test {
  protected:
   void SetUp() override {
     try {
@@ -45,9 +38,9 @@ class SdfMorphBackends : public ::testing::Test {
     }
     dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     timeline = dir + "/t.toml";
-    test::write_text(timeline, agreement_timeline());
+    test::write_text(timeline, small_timeline());
   }
-  // Outputs stay for inspection when the test failed (the agreement test's diff images).
+  // Outputs stay for inspection when the test failed.
   void TearDown() override {
     if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
   }
@@ -63,32 +56,7 @@ class SdfMorphBackends : public ::testing::Test {
   std::string dir, timeline;
 };
 
-std::string frame_png(const std::string& out, int i) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/frames/%05d.png", i);
-  return out + name;
-}
-
-TEST_F(SdfMorphBackends, OsmesaIsDeterministicAcrossRunsAndThreadCounts) {
-  const std::string one = render("lp1", "osmesa", "LP_NUM_THREADS=1 ");
-  const std::string two = render("lp2", "osmesa", "LP_NUM_THREADS=2 ");
-  const std::string again = render("lp2-again", "osmesa", "LP_NUM_THREADS=2 ");
-  const std::string md5 = test::read_text(one + "/frames.framemd5");
-  ASSERT_FALSE(md5.empty());
-  EXPECT_EQ(md5, test::read_text(two + "/frames.framemd5"));
-  EXPECT_EQ(md5, test::read_text(again + "/frames.framemd5"));
-  // The linear hashes too (the display hash could hide differences below 16-bit display steps).
-  auto linear = [](const std::string& out) {
-    const auto j = nlohmann::json::parse(test::read_text(out + "/manifest.json"));
-    std::string all;
-    for (const auto& f : j.at("frames")) all += f.at("linear_md5").get<std::string>() + " ";
-    return all;
-  };
-  EXPECT_EQ(linear(one), linear(two));
-  EXPECT_EQ(linear(one), linear(again));
-}
-
-TEST_F(SdfMorphBackends, ManifestNamesBackendMesaAndRenderer) {
+TEST_F(OsmesaCli, ManifestNamesBackendMesaAndRenderer) {
   const std::string out = render("manifest", "osmesa");
   const auto j = nlohmann::json::parse(test::read_text(out + "/manifest.json"));
   EXPECT_EQ(j.at("backend"), "osmesa");
@@ -103,25 +71,7 @@ TEST_F(SdfMorphBackends, ManifestNamesBackendMesaAndRenderer) {
   for (const auto& f : j.at("frames")) EXPECT_GT(f.at("sdf_evals_per_pixel").get<double>(), 1.0);
 }
 
-TEST_F(SdfMorphBackends, AgreesWithTheCpuBackend) {
-  const std::string cpu = render("cpu", "cpu");
-  const std::string gl = render("osmesa", "osmesa");
-  for (int i = 0; i < FRAMES; ++i) {
-    const ImageRGB16 a = read_png16(frame_png(cpu, i)), b = read_png16(frame_png(gl, i));
-    const test::DisplayDifference d = test::compare_display(a, b);
-    std::printf("frame %d: mean %.4f/255, p99.9 %.3f/255, max %.2f/255, identical %.2f%%\n", i,
-                d.mean, d.p999, d.max, 100.0 * d.identical_share);
-    if (d.mean >= MAX_MEAN_DIFF || d.p999 >= MAX_P999_DIFF) {
-      const std::string diff = dir + "/diff-" + std::to_string(i) + ".png";
-      write_png16_atomic(diff, test::difference_image(a, b, 16.0));
-      ADD_FAILURE() << "frame " << i << ": backends differ by " << d.mean << "/255 on average and "
-                    << d.p999 << "/255 at the 99.9th percentile; cpu " << frame_png(cpu, i)
-                    << ", osmesa " << frame_png(gl, i) << ", |difference| x16: " << diff;
-    }
-  }
-}
-
-TEST_F(SdfMorphBackends, MissingOsmesaLibraryIsAClearErrorNotACrash) {
+TEST_F(OsmesaCli, MissingOsmesaLibraryIsAClearErrorNotACrash) {
   const std::string env = "SDFREEL_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8 ";
   const test::BinaryResult r =
       run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa", env);
@@ -134,7 +84,7 @@ TEST_F(SdfMorphBackends, MissingOsmesaLibraryIsAClearErrorNotACrash) {
   EXPECT_EQ(cpu.status, 0) << cpu.err;
 }
 
-TEST_F(SdfMorphBackends, ShaderErrorNamesFileAndLineAndExitsWithOne) {
+TEST_F(OsmesaCli, ShaderErrorNamesFileAndLineAndExitsWithOne) {
   // A copy of the shader folder whose sdf_morph/sdf_morph.glsl has an undeclared name on a known
   // line.
   const std::string shaders = dir + "/shaders";
