@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "cli/errors.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 

@@ -9,9 +9,10 @@
 #ifdef SDFREEL_HAVE_OSMESA
 #include "backends/osmesa/osmesa_backend.h"
 #endif
-#include "cli/errors.h"
 #include "cli/frame_range.h"
 #include "io/color.h"
+#include "pipeline/errors.h"
+#include "scenes/registry.h"
 
 namespace sdfreel {
 
@@ -51,7 +52,7 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
 
 Timeline load_with_overrides(const RenderOptions& o) {
   OcioChecker checker;
-  Timeline tl = load_timeline(o.timeline_path, &checker);
+  Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker);
   if (!o.resolution.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;

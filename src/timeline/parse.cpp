@@ -66,7 +66,8 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
 
 }  // namespace
 
-Timeline load_timeline(const std::string& path, const ColorChecker* color) {
+Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                       const ColorChecker* color) {
   const std::string text = read_file(path);
   if (std::optional<TextPosition> bad = find_invalid_utf8(text))
     throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
@@ -85,7 +86,7 @@ Timeline load_timeline(const std::string& path, const ColorChecker* color) {
 
   TomlReader r(path);
   r.check_keys(root, "", {"video", "output", "color", "time", "camera", "params"});
-  const SceneInfo& scene = parse_video(r, root, tl);
+  const SceneInfo& scene = parse_video(r, root, scenes, tl);
   parse_output(r, root, tl);
   parse_color(r, root, tl);
   parse_time(r, root, tl);

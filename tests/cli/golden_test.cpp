@@ -44,9 +44,9 @@ class GoldenFrames : public ::testing::TestWithParam<std::tuple<Golden, std::str
 TEST_P(GoldenFrames, MatchCommittedHashes) {
   const Golden& g = std::get<0>(GetParam());
   const std::string& backend = std::get<1>(GetParam());
-  const std::string dir = make_scratch_dir("golden-" + g.scene + "-" + g.name + "-" + backend);
+  const std::string dir = scratch_dir("golden-" + g.scene + "-" + g.name + "-" + backend);
   fs::copy_file(g.path(".toml"), dir + "/t.toml");
-  const RunResult r = sdfreel("render t.toml --backend " + backend, dir);
+  const RunResult r = run_sdfreel("render t.toml --backend " + backend, dir);
   // A machine (or build) without OSMesa cannot run the osmesa backend at all: nothing to compare.
   if (r.status != 0 && (r.err.find("cannot start the osmesa backend") != std::string::npos ||
                         r.err.find("osmesa backend is not built") != std::string::npos))

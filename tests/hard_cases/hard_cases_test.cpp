@@ -34,7 +34,7 @@
 
 #include "backends/cpu/cpu_backend.h"
 #include "bench/metrics.h"
-#include "cli/frame_pipeline.h"
+#include "pipeline/frame_pipeline.h"
 #include "scenes/registry.h"
 #include "sdf/sdf.h"
 #include "timeline/timeline.h"
@@ -97,7 +97,7 @@ const CaseRender& render_case(const std::string& name) {
   auto it = cache.find(name);
   if (it != cache.end()) return it->second;
   CaseRender r;
-  r.tl = load_timeline(case_dir() + "/" + name + ".toml", nullptr);
+  r.tl = load_timeline(all_scenes(), case_dir() + "/" + name + ".toml", nullptr);
   FramePipeline pipe(r.tl, std::make_unique<CpuBackend>(0));
   bench::ErrorAccumulator error;
   for (int i = 0; i < r.tl.frame_count(); ++i) {

@@ -8,7 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "backends/osmesa/osmesa_platform.h"
-#include "osmesa/run_binary.h"
+#include "support/run.h"
+#include "support/scratch.h"
 
 namespace sdfreel {
 namespace {
@@ -38,7 +39,7 @@ class OsmesaCli : public ::testing::Test {
     }
     dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     timeline = dir + "/t.toml";
-    test::write_text(timeline, small_timeline());
+    test::write_file(timeline, small_timeline());
   }
   // Outputs stay for inspection when the test failed.
   void TearDown() override {
@@ -48,8 +49,8 @@ class OsmesaCli : public ::testing::Test {
   std::string render(const std::string& name, const std::string& backend,
                      const std::string& env = "") {
     const std::string out = dir + "/" + name;
-    const test::BinaryResult r =
-        run_sdfreel("render '" + timeline + "' --backend " + backend + " --out '" + out + "'", env);
+    const test::RunResult r = run_sdfreel(
+        "render '" + timeline + "' --backend " + backend + " --out '" + out + "'", ".", env);
     EXPECT_EQ(r.status, 0) << r.err;
     return out;
   }
@@ -58,7 +59,7 @@ class OsmesaCli : public ::testing::Test {
 
 TEST_F(OsmesaCli, ManifestNamesBackendMesaAndRenderer) {
   const std::string out = render("manifest", "osmesa");
-  const auto j = nlohmann::json::parse(test::read_text(out + "/manifest.json"));
+  const auto j = nlohmann::json::parse(test::read_file(out + "/manifest.json"));
   EXPECT_EQ(j.at("backend"), "osmesa");
   const auto& v = j.at("versions");
   ASSERT_TRUE(v.contains("osmesa.mesa")) << v.dump();
@@ -73,14 +74,14 @@ TEST_F(OsmesaCli, ManifestNamesBackendMesaAndRenderer) {
 
 TEST_F(OsmesaCli, MissingOsmesaLibraryIsAClearErrorNotACrash) {
   const std::string env = "SDFREEL_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8 ";
-  const test::BinaryResult r =
-      run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa", env);
+  const test::RunResult r = run_sdfreel(
+      "still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa", ".", env);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("OSMesa is not available"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/x.png"));
   // The CPU backend does not need the library.
-  const test::BinaryResult cpu =
-      run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/y.png' --backend cpu", env);
+  const test::RunResult cpu = run_sdfreel(
+      "still '" + timeline + "' --time 0 -o '" + dir + "/y.png' --backend cpu", ".", env);
   EXPECT_EQ(cpu.status, 0) << cpu.err;
 }
 
@@ -89,13 +90,13 @@ TEST_F(OsmesaCli, ShaderErrorNamesFileAndLineAndExitsWithOne) {
   // line.
   const std::string shaders = dir + "/shaders";
   fs::copy(fs::path(SDFREEL_SOURCE_DIR) / "shaders", shaders, fs::copy_options::recursive);
-  std::string text = test::read_text(shaders + "/sdf_morph/sdf_morph.glsl");
+  std::string text = test::read_file(shaders + "/sdf_morph/sdf_morph.glsl");
   int line = 1;
   for (char c : text) line += c == '\n';
   text += "float broken_on_purpose() { return undeclared_name; }\n";
-  test::write_text(shaders + "/sdf_morph/sdf_morph.glsl", text);
-  const test::BinaryResult r =
-      run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa",
+  test::write_file(shaders + "/sdf_morph/sdf_morph.glsl", text);
+  const test::RunResult r =
+      run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend osmesa", ".",
                   "SDFREEL_SHADER_DIR='" + shaders + "' ");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find(shaders + "/sdf_morph/sdf_morph.glsl:" + std::to_string(line) + ":"),

@@ -13,7 +13,9 @@
 #include "backends/osmesa/osmesa_platform.h"
 #include "io/frame_files.h"
 #include "osmesa/image_compare.h"
-#include "osmesa/run_binary.h"
+#include "scenes/registry.h"
+#include "support/run.h"
+#include "support/scratch.h"
 #include "timeline/timeline.h"
 
 namespace sdfreel {
@@ -27,7 +29,7 @@ constexpr const char* RESOLUTION = "160x90";
 
 std::vector<std::string> timeline_names() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(std::string(SDFREEL_SOURCE_DIR) + "/timelines"))
+  for (const auto& e : fs::directory_iterator(test::source_path("timelines")))
     if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
@@ -47,7 +49,7 @@ std::string frame_png(const std::string& out, int i) {
 
 // The scene-linear hash of every frame, in frame order.
 std::vector<std::string> linear_hashes(const std::string& out) {
-  const auto j = nlohmann::json::parse(test::read_text(out + "/manifest.json"));
+  const auto j = nlohmann::json::parse(test::read_file(out + "/manifest.json"));
   std::vector<std::string> all;
   for (const auto& f : j.at("frames")) all.push_back(f.at("linear_md5").get<std::string>());
   return all;
@@ -61,8 +63,8 @@ class TimelineBackends : public ::testing::TestWithParam<std::string> {
     } catch (const GlPlatformError& e) {
       GTEST_SKIP() << "OSMesa unavailable: " << e.what();
     }
-    timeline = std::string(SDFREEL_SOURCE_DIR) + "/timelines/" + GetParam() + ".toml";
-    const int n = load_timeline(timeline, nullptr).frame_count();
+    timeline = test::source_path("timelines/" + GetParam() + ".toml");
+    const int n = load_timeline(all_scenes(), timeline, nullptr).frame_count();
     frames = {0, n / 2, n - 1};
     dir = test::scratch_dir("timeline-" + GetParam() + "-" +
                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -75,10 +77,10 @@ class TimelineBackends : public ::testing::TestWithParam<std::string> {
   std::string render(const std::string& name, const std::vector<int>& which,
                      const std::string& backend, const std::string& env = "") {
     const std::string out = dir + "/" + name;
-    const test::BinaryResult r = test::run_sdfreel(
+    const test::RunResult r = test::run_sdfreel(
         "render '" + timeline + "' --backend " + backend + " --frames " + frame_list(which) +
             " --resolution " + RESOLUTION + " --no-video --out '" + out + "'",
-        env);
+        ".", env);
     EXPECT_EQ(r.status, 0) << r.err;
     return out;
   }
@@ -117,10 +119,10 @@ TEST_P(TimelineBackends, OsmesaIsDeterministicAcrossRunsAndThreadCounts) {
   const std::string one = render("lp1", middle, "osmesa", "LP_NUM_THREADS=1 ");
   const std::string two = render("lp2", middle, "osmesa", "LP_NUM_THREADS=2 ");
   const std::string again = render("lp2-again", middle, "osmesa", "LP_NUM_THREADS=2 ");
-  const std::string md5 = test::read_text(one + "/frames.framemd5");
+  const std::string md5 = test::read_file(one + "/frames.framemd5");
   ASSERT_FALSE(md5.empty());
-  EXPECT_EQ(md5, test::read_text(two + "/frames.framemd5"));
-  EXPECT_EQ(md5, test::read_text(again + "/frames.framemd5"));
+  EXPECT_EQ(md5, test::read_file(two + "/frames.framemd5"));
+  EXPECT_EQ(md5, test::read_file(again + "/frames.framemd5"));
   // The linear hashes too (the display hash could hide differences below 16-bit display steps).
   ASSERT_EQ(linear_hashes(one).size(), 1u);
   EXPECT_EQ(linear_hashes(one), linear_hashes(two));

@@ -28,8 +28,4 @@ Texture make_paper_normal_map(int n, uint32_t seed);
 // Tiling value-noise map in [0, 1] (one channel): blotches that darken the paper's albedo.
 Texture make_paper_noise_map(int n, uint32_t seed);
 
-// Periodic fractal value noise on the unit torus (period 1 in x and y), `octaves` layers starting
-// at `cells` lattice cells per period. Exposed for tests (tiling) and the sky's clouds.
-float periodic_fbm(float x, float y, int cells, int octaves, uint32_t seed);
-
 }  // namespace sdfreel::lantern_festival

@@ -1,30 +1,12 @@
 // What the GLSL twin (shaders/lantern_festival/lantern_festival.glsl) reads besides the frame
 // uniforms (u_march, u_time, p_<param>, the camera): the per-frame structs prepare() filled, field
 // for field, as u_lake.*, u_grid.*, u_light.*, u_sky.* and u_water.*, and the generated textures.
+#include "scenes/common/uniform_list.h"
 #include "scenes/lantern_festival/scene.h"
 
 namespace sdfreel::lantern_festival {
 
 namespace {
-
-class UniformList {
- public:
-  explicit UniformList(std::string prefix) : prefix_(std::move(prefix)) {}
-  UniformList& f(const char* name, float v) { return add(name, 1, {v}); }
-  UniformList& v2(const char* name, const glm::vec2& v) { return add(name, 2, {v.x, v.y}); }
-  UniformList& v3(const char* name, const glm::vec3& v) { return add(name, 3, {v.x, v.y, v.z}); }
-  UniformList& add(const char* name, int components, std::vector<float> values) {
-    out_.push_back(ShaderUniform{prefix_ + "." + name, components, std::move(values)});
-    return *this;
-  }
-  void append_to(std::vector<ShaderUniform>& all) {
-    all.insert(all.end(), out_.begin(), out_.end());
-  }
-
- private:
-  std::string prefix_;
-  std::vector<ShaderUniform> out_;
-};
 
 ShaderTexture shader_texture(const char* name, const Texture& t) {
   return {name, t.width, t.height, t.channels, t.texels};
@@ -101,9 +83,9 @@ std::vector<ShaderUniform> LanternFestivalScene::shader_uniforms() const {
       .v3("color", water_color_)
       .f("reflection_strength", reflection_strength_)
       .f("fog_density", fog_density_)
-      .f("reference_march", reference_march_ ? 1.0f : 0.0f)
-      .f("naive", march_.naive ? 1.0f : 0.0f)
-      .f("hit_mask", march_.hit_mask ? 1.0f : 0.0f)
+      .flag("reference_march", reference_march_)
+      .flag("naive", march_.naive)
+      .flag("hit_mask", march_.hit_mask)
       .append_to(all);
   return all;
 }

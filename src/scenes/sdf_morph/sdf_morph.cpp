@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "scenes/common/param.h"
 #include "scenes/scene.h"
 #include "scenes/sdf_morph/lanes.h"
 #include "scenes/sdf_morph/render.h"
@@ -34,14 +35,6 @@ class SdfMorphScene : public Scene {
   sdf_morph::MorphUniforms u_;
 };
 
-ParamSpec scalar(const char* name, double def, double min, double max, const char* doc) {
-  return ParamSpec{name, 1, {def}, min, max, doc};
-}
-
-ParamSpec colour(const char* name, std::vector<double> def, const char* doc) {
-  return ParamSpec{name, 3, std::move(def), 0.0, 1.0, doc};
-}
-
 // Close-ups: the object fills the frame (relaxed marches, reflections of the pedestal and of the
 // mug's inside), and the pedestal's foot with the object's shadow on the floor.
 std::vector<CameraPose> test_poses(const CameraPose& def) {
@@ -66,18 +59,19 @@ SceneInfo sdf_morph_scene_info() {
       "reflection probe, mixed with a coloured base by a Fresnel term; a key light casts soft "
       "shadows onto the pedestal and floor.";
   info.params = {
-      scalar("morph_period", 6.0, 0.5, 120.0, "seconds for torus -> mug -> torus"),
-      scalar("rotation_speed", 0.35, -3.14159, 3.14159,
-             "turning speed of the object about the vertical axis, radians per second"),
-      colour("color", {0.9, 0.6, 0.3}, "base (diffuse) colour of the object, linear Rec.709"),
-      scalar("reflectivity", 0.6, 0.0, 1.0,
-             "mirror reflection at normal incidence (Schlick F0); grazing angles reflect fully"),
-      scalar("key_light_intensity", 2.0, 0.0, 20.0,
-             "irradiance of the key light (direction of the large front-left soft box)"),
-      scalar("shadow_softness", 12.0, 1.0, 128.0,
-             "penumbra sharpness k of the soft shadows: small = soft and wide, large = hard"),
-      scalar("environment_intensity", 1.0, 0.0, 10.0,
-             "scale of the studio: walls, soft boxes (reflections) and ambient light"),
+      scalar_param("morph_period", 6.0, 0.5, 120.0, "seconds for torus -> mug -> torus"),
+      scalar_param("rotation_speed", 0.35, -3.14159, 3.14159,
+                   "turning speed of the object about the vertical axis, radians per second"),
+      colour_param("color", {0.9, 0.6, 0.3}, "base (diffuse) colour of the object, linear Rec.709"),
+      scalar_param(
+          "reflectivity", 0.6, 0.0, 1.0,
+          "mirror reflection at normal incidence (Schlick F0); grazing angles reflect fully"),
+      scalar_param("key_light_intensity", 2.0, 0.0, 20.0,
+                   "irradiance of the key light (direction of the large front-left soft box)"),
+      scalar_param("shadow_softness", 12.0, 1.0, 128.0,
+                   "penumbra sharpness k of the soft shadows: small = soft and wide, large = hard"),
+      scalar_param("environment_intensity", 1.0, 0.0, 10.0,
+                   "scale of the studio: walls, soft boxes (reflections) and ambient light"),
   };
   info.default_camera = CameraPose{{0.0, 1.45, -3.4}, {0.0, 0.72, 0.0}, 40.0, 0.0};
   info.test_poses = test_poses(info.default_camera);

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "scenes/common/uniform_list.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::sdf_morph {
@@ -81,45 +82,37 @@ MorphUniforms make_morph_uniforms(const FrameContext& ctx) {
 }
 
 std::vector<ShaderUniform> morph_shader_uniforms(const MorphUniforms& u) {
-  const auto f = [](const std::string& name, float v) {
-    return ShaderUniform{"u_morph." + name, 1, {v}};
-  };
-  const auto v2 = [](const std::string& name, const glm::vec2& v) {
-    return ShaderUniform{"u_morph." + name, 2, {v.x, v.y}};
-  };
-  const auto v3 = [](const std::string& name, const glm::vec3& v) {
-    return ShaderUniform{"u_morph." + name, 3, {v.x, v.y, v.z}};
-  };
-  std::vector<ShaderUniform> out = {
-      f("morph", u.morph),
-      f("rot_cos", u.rot_cos),
-      f("rot_sin", u.rot_sin),
-      v3("base_color", u.base_color),
-      f("reflectivity", u.reflectivity),
-      f("key_intensity", u.key_intensity),
-      f("shadow_k", u.shadow_k),
-      f("env_intensity", u.env_intensity),
-      f("max_steps", float(u.max_steps)),
-      f("shadow_steps", float(u.shadow_steps)),
-      f("reflect_steps", float(u.reflect_steps)),
-      f("hit_eps", u.hit_eps),
-      f("step_factor", u.step_factor),
-      f("normal_eps", u.normal_eps),
-      f("max_dist", u.max_dist),
-      f("naive", u.naive ? 1.0f : 0.0f),
-      f("hit_mask", u.hit_mask ? 1.0f : 0.0f),
-  };
+  UniformList list("u_morph");
+  list.f("morph", u.morph)
+      .f("rot_cos", u.rot_cos)
+      .f("rot_sin", u.rot_sin)
+      .v3("base_color", u.base_color)
+      .f("reflectivity", u.reflectivity)
+      .f("key_intensity", u.key_intensity)
+      .f("shadow_k", u.shadow_k)
+      .f("env_intensity", u.env_intensity)
+      .f("max_steps", float(u.max_steps))
+      .f("shadow_steps", float(u.shadow_steps))
+      .f("reflect_steps", float(u.reflect_steps))
+      .f("hit_eps", u.hit_eps)
+      .f("step_factor", u.step_factor)
+      .f("normal_eps", u.normal_eps)
+      .f("max_dist", u.max_dist)
+      .flag("naive", u.naive)
+      .flag("hit_mask", u.hit_mask);
+  std::vector<ShaderUniform> all = list.uniforms();
   for (int i = 0; i < SOFTBOX_COUNT; ++i) {
     const SoftBox& b = u.boxes[i];
-    const std::string box = "boxes[" + std::to_string(i) + "].";
-    out.push_back(v3(box + "dir", b.dir));
-    out.push_back(v3(box + "u", b.u));
-    out.push_back(v3(box + "v", b.v));
-    out.push_back(v2(box + "half_size", b.half_size));
-    out.push_back(f(box + "corner", b.corner));
-    out.push_back(v3(box + "radiance", b.radiance));
+    UniformList("u_morph.boxes[" + std::to_string(i) + "]")
+        .v3("dir", b.dir)
+        .v3("u", b.u)
+        .v3("v", b.v)
+        .v2("half_size", b.half_size)
+        .f("corner", b.corner)
+        .v3("radiance", b.radiance)
+        .append_to(all);
   }
-  return out;
+  return all;
 }
 
 }  // namespace sdfreel::sdf_morph

@@ -1,11 +1,11 @@
-#include "cli/frame_pipeline.h"
+#include "pipeline/frame_pipeline.h"
 
 #include <chrono>
 #include <cstdio>
 
-#include "cli/errors.h"
 #include "io/half_image.h"
 #include "io/hashing.h"
+#include "pipeline/errors.h"
 #include "scenes/registry.h"
 
 namespace sdfreel {
