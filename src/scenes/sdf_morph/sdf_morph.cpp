@@ -15,6 +15,25 @@
 namespace sdfreel {
 namespace {
 
+// The parameters, each with its default, range and meaning (printed by `sdfreel scenes sdf_morph`).
+std::vector<ParamSpec> params() {
+  return {
+      scalar_param("morph_period", 6.0, 0.5, 120.0, "seconds for torus -> mug -> torus"),
+      scalar_param("rotation_speed", 0.35, -3.14159, 3.14159,
+                   "turning speed of the object about the vertical axis, radians per second"),
+      colour_param("color", {0.9, 0.6, 0.3}, "base (diffuse) colour of the object, linear Rec.709"),
+      scalar_param(
+          "reflectivity", 0.6, 0.0, 1.0,
+          "mirror reflection at normal incidence (Schlick F0); grazing angles reflect fully"),
+      scalar_param("key_light_intensity", 2.0, 0.0, 20.0,
+                   "irradiance of the key light (direction of the large front-left soft box)"),
+      scalar_param("shadow_softness", 12.0, 1.0, 128.0,
+                   "penumbra sharpness k of the soft shadows: small = soft and wide, large = hard"),
+      scalar_param("environment_intensity", 1.0, 0.0, 10.0,
+                   "scale of the studio: walls, soft boxes (reflections) and ambient light"),
+  };
+}
+
 class SdfMorphScene : public Scene {
  public:
   void prepare(const FrameContext& ctx) override { u_ = sdf_morph::make_morph_uniforms(ctx); }
@@ -58,21 +77,7 @@ SceneInfo sdf_morph_scene_info() {
       "analytic studio (gradient walls, three soft boxes) that stands in for the seed's "
       "reflection probe, mixed with a coloured base by a Fresnel term; a key light casts soft "
       "shadows onto the pedestal and floor.";
-  info.params = {
-      scalar_param("morph_period", 6.0, 0.5, 120.0, "seconds for torus -> mug -> torus"),
-      scalar_param("rotation_speed", 0.35, -3.14159, 3.14159,
-                   "turning speed of the object about the vertical axis, radians per second"),
-      colour_param("color", {0.9, 0.6, 0.3}, "base (diffuse) colour of the object, linear Rec.709"),
-      scalar_param(
-          "reflectivity", 0.6, 0.0, 1.0,
-          "mirror reflection at normal incidence (Schlick F0); grazing angles reflect fully"),
-      scalar_param("key_light_intensity", 2.0, 0.0, 20.0,
-                   "irradiance of the key light (direction of the large front-left soft box)"),
-      scalar_param("shadow_softness", 12.0, 1.0, 128.0,
-                   "penumbra sharpness k of the soft shadows: small = soft and wide, large = hard"),
-      scalar_param("environment_intensity", 1.0, 0.0, 10.0,
-                   "scale of the studio: walls, soft boxes (reflections) and ambient light"),
-  };
+  info.params = params();
   info.default_camera = CameraPose{{0.0, 1.45, -3.4}, {0.0, 0.72, 0.0}, 40.0, 0.0};
   info.test_poses = test_poses(info.default_camera);
   info.shader = "sdf_morph/sdf_morph.glsl";
