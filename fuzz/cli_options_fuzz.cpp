@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "cli/errors.h"
+#include "pipeline/errors.h"
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
 #include "timeline/rules.h"

@@ -1,5 +1,5 @@
-// libFuzzer target: the manifest.json and manifest.journal readers, and the framemd5 writer on
-// what they accept. Malformed input must end in std::runtime_error (exit 2 for a manifest named
+// libFuzzer target: the manifest.json, manifest.journal and framemd5 readers (everything
+// `verify --manifest` reads), and the framemd5 writer on what they accept. Malformed input must end in std::runtime_error (exit 2 for a manifest named
 // on the command line); an accepted manifest must survive a write/read round trip unchanged.
 #include <cstddef>
 #include <cstdint>
@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/framemd5_reader.h"
 #include "io/manifest.h"
 #include "io/manifest_journal.h"
 
@@ -27,6 +28,12 @@ bool same_frames(const sdfreel::Manifest& a, const sdfreel::Manifest& b) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
+  // A framemd5 reader must accept or throw Framemd5Error, nothing else; what it accepts has MD5s.
+  try {
+    for (const auto& [pts, frame] : sdfreel::parse_framemd5(text).frames)
+      if (pts < 0 || frame.md5.size() != 32) std::abort();
+  } catch (const sdfreel::Framemd5Error&) {
+  }
   // Bytes after the first NUL, if any, are a journal for the manifest before it.
   const size_t nul = text.find('\0');
   const std::string manifest_text = text.substr(0, nul);

@@ -4,12 +4,14 @@
 #include <cstdint>
 #include <string>
 
+#include "scenes/registry.h"
 #include "timeline/timeline.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    sdfreel::Timeline tl = sdfreel::parse_timeline("fuzz.toml", text, nullptr);
+    sdfreel::Timeline tl =
+        sdfreel::parse_timeline(sdfreel::all_scenes(), "fuzz.toml", text, nullptr);
     // What render does with a valid timeline before the first frame: frame count, times, camera.
     sdfreel::validate_overrides(tl);
     const int frames = tl.frame_count();

@@ -21,7 +21,7 @@ cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
 
 seeds_for() {
   case "$1" in
-    fuzz_timeline) ls tests/golden/*.toml tests/hard_cases/*.toml timelines/*.toml ;;
+    fuzz_timeline) ls tests/golden/*/*.toml tests/hard_cases/*/*.toml timelines/*.toml ;;
     fuzz_manifest) ls tests/fuzz_seeds/manifest/* ;;
     fuzz_cli_options) ls tests/fuzz_seeds/cli_options/* ;;
   esac

@@ -12,5 +12,5 @@ ctest --output-on-failure -j "$(nproc)" --timeout 900
 cd ..
 # About 3 minutes of clang builds plus 25 s a target: crashes, hangs and sanitizer reports fail CI.
 scripts/fuzz.sh 25
-# clang++ -O2 (avx2) and g++ -O2 baseline must render the golden timelines bit for bit.
+# clang++ -O2 on the baseline instruction set must render the golden timelines bit for bit.
 scripts/build-matrix.sh --ci

@@ -1,8 +1,8 @@
 #pragma once
 // One add_*_command per command file; each sets `status` when its command runs.
-#include "cli/errors.h"
-#include "cli/frame_pipeline.h"
 #include "cli/render_options.h"
+#include "pipeline/errors.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace CLI {
 class App;

@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "cli/errors.h"
 #include "cli/option_numbers.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 

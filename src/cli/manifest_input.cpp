@@ -1,6 +1,6 @@
 #include "cli/manifest_input.h"
 
-#include "cli/errors.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 

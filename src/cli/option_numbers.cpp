@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "cli/errors.h"
+#include "pipeline/errors.h"
 #include "timeline/rules.h"  // kMaxImageSize
 
 namespace sdfreel {

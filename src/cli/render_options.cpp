@@ -9,10 +9,11 @@
 #ifdef SDFREEL_HAVE_OSMESA
 #include "backends/osmesa/osmesa_backend.h"
 #endif
-#include "cli/errors.h"
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
 #include "io/color.h"
+#include "pipeline/errors.h"
+#include "scenes/registry.h"
 #include "timeline/rules.h"
 
 namespace sdfreel {
@@ -53,7 +54,7 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
 
 Timeline load_with_overrides(const RenderOptions& o) {
   OcioChecker checker;
-  Timeline tl = load_timeline(o.timeline_path, &checker);
+  Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker);
   if (!o.resolution.empty()) {
     const Resolution r = parse_resolution_option(o.resolution);
     if (std::string problem = check_resolution(r.width, r.height); !problem.empty())

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <regex>
 
-#include "cli/errors.h"
+#include "pipeline/errors.h"
 #include "cli/render_options.h"
 
 namespace sdfreel {

@@ -12,7 +12,7 @@
 
 #include "io/atomic_file.h"
 #include "io/bounded_read.h"
-#include "io/hashing.h"
+#include "timeline/sha256.h"
 
 namespace sdfreel {
 

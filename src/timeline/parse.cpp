@@ -85,12 +85,13 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
 
 }  // namespace
 
-Timeline load_timeline(const std::string& path, const ColorChecker* color) {
-  return parse_timeline(path, read_file(path), color);
+Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                       const ColorChecker* color) {
+  return parse_timeline(scenes, path, read_file(path), color);
 }
 
-Timeline parse_timeline(const std::string& path, const std::string& text,
-                        const ColorChecker* color) {
+Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                        const std::string& text, const ColorChecker* color) {
   if (std::optional<TextPosition> bad = find_invalid_utf8(text))
     throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
 
@@ -108,7 +109,7 @@ Timeline parse_timeline(const std::string& path, const std::string& text,
 
   TomlReader r(path);
   r.check_keys(root, "", {"video", "output", "color", "time", "camera", "params"});
-  const SceneInfo& scene = parse_video(r, root, tl);
+  const SceneInfo& scene = parse_video(r, root, scenes, tl);
   parse_output(r, root, tl);
   parse_color(r, root, tl);
   parse_time(r, root, tl);

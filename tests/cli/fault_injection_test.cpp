@@ -37,7 +37,7 @@ class SmallDisk {
 };
 
 TEST(FaultInjection, FullDiskNeverPublishesATruncatedFrameAndExitsOne) {
-  const std::string dir = make_scratch_dir("fault-tmpfs");
+  const std::string dir = scratch_dir("fault-tmpfs");
   SmallDisk disk(dir + "/disk", "60k");
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   // About 15 KB of frame files a frame: the disk fills during frame 2 or 3.
@@ -52,7 +52,7 @@ TEST(FaultInjection, FullDiskNeverPublishesATruncatedFrameAndExitsOne) {
 }
 
 TEST(FaultInjection, RerenderOnANearlyFullDiskFailsAndKeepsTheOldFrames) {
-  const std::string dir = make_scratch_dir("fault-tmpfs-rerender");
+  const std::string dir = scratch_dir("fault-tmpfs-rerender");
   SmallDisk disk(dir + "/disk", "400k");
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   write_file(dir + "/disk/t.toml", small_timeline(4));
@@ -73,7 +73,7 @@ TEST(FaultInjection, RerenderOnANearlyFullDiskFailsAndKeepsTheOldFrames) {
 // N until the render gets through: each run exits 1 saying so and leaves a consistent folder with
 // no temporaries; a --resume afterwards (tried after every third fault) completes it.
 TEST(FaultInjection, WriteFailureAtEveryWriteSite) {
-  const std::string dir = make_scratch_dir("fault-every-site");
+  const std::string dir = scratch_dir("fault-every-site");
   write_file(dir + "/t.toml", small_timeline(2));
   int n = 1;
   for (; n < 400; ++n) {
@@ -101,7 +101,7 @@ TEST(FaultInjection, WriteFailureAtEveryWriteSite) {
 // kill -9 at many moments of a render with video (start-up, frames, video finish), each followed
 // by --resume: the result is always the complete render, with no temporaries left.
 TEST(FaultInjection, KillAtManyPointsThenResume) {
-  const std::string dir = make_scratch_dir("fault-kill");
+  const std::string dir = scratch_dir("fault-kill");
   write_file(dir + "/t.toml", small_timeline(10));
   const auto start = std::chrono::steady_clock::now();
   ASSERT_EQ(sdfreel_run("render t.toml", dir).status, 0);
@@ -143,7 +143,7 @@ TEST(FaultInjection, KillAtManyPointsThenResume) {
 
 // Concurrent writers into one folder: three shards and a whole render at once, then encode.
 TEST(FaultInjection, ConcurrentShardsAndRenderIntoOneFolder) {
-  const std::string dir = make_scratch_dir("fault-concurrent");
+  const std::string dir = scratch_dir("fault-concurrent");
   write_file(dir + "/t.toml", small_timeline(9));
   const std::string bin = "'" + sdfreel_binary() + "' ";
   const RunResult r = run(bin + "render t.toml --shard 0/3 2>e0 & a=$!; " + bin +

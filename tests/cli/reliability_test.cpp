@@ -27,7 +27,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 // video that decodes to exactly the listed frames.
 TEST(Reliability, ConcurrentRendersWithVideoPublishADecodableVideo) {
   if (!have_tool("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
-  const std::string dir = make_scratch_dir("rel-concurrent-video");
+  const std::string dir = scratch_dir("rel-concurrent-video");
   write_file(dir + "/t.toml", small_timeline(6));
   const std::string bin = "'" + sdfreel_binary() + "' ";
   for (int round = 0; round < 3; ++round) {
@@ -53,7 +53,7 @@ TEST(Reliability, ConcurrentRendersWithVideoPublishADecodableVideo) {
 // Item 3: a render killed while its video is open leaves a temporary video; the next render
 // (even --no-video) removes it at start-up.
 TEST(Reliability, KilledRendersTemporaryVideoIsCleanedAtStartUp) {
-  const std::string dir = make_scratch_dir("rel-kill-video");
+  const std::string dir = scratch_dir("rel-kill-video");
   write_file(dir + "/t.toml", small_timeline(80));
   const RunResult killed =
       run("'" + sdfreel_binary() + "' render t.toml 2>/dev/null & pid=$!; " +
@@ -86,7 +86,7 @@ TEST(Reliability, BadVideoNamesAndControlCharactersInDirAreRefusedBeforeWriting)
       {"newline_in_video", replace(good, "small.mkv", "sm\\nall.mkv"), "control character"},
   };
   for (const Case& c : cases) {
-    const std::string dir = make_scratch_dir(std::string("rel-bad-") + c.name);
+    const std::string dir = scratch_dir(std::string("rel-bad-") + c.name);
     write_file(dir + "/t.toml", c.timeline);
     const RunResult r = sdfreel_run("render t.toml", dir);
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
@@ -99,7 +99,7 @@ TEST(Reliability, BadVideoNamesAndControlCharactersInDirAreRefusedBeforeWriting)
     EXPECT_TRUE(made.empty()) << c.name << " wrote " << ::testing::PrintToString(made);
   }
   // encode -o with a container that cannot hold the codec: exit 2, no file.
-  const std::string dir = make_scratch_dir("rel-bad-encode");
+  const std::string dir = scratch_dir("rel-bad-encode");
   write_file(dir + "/t.toml", small_timeline(2));
   ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
   const RunResult r = sdfreel_run("encode out -o v.mp4 --codec ffv1", dir);
@@ -109,7 +109,7 @@ TEST(Reliability, BadVideoNamesAndControlCharactersInDirAreRefusedBeforeWriting)
 
 // Item 5: numbers that do not fit are refused (exit 2), never wrapped; huge shard indices work.
 TEST(Reliability, CommandLineNumbersDoNotOverflow) {
-  const std::string dir = make_scratch_dir("rel-overflow");
+  const std::string dir = scratch_dir("rel-overflow");
   write_file(dir + "/t.toml", small_timeline(4));
   for (const char* args :
        {"--resolution 4294967298x2", "--resolution 4294967360x36",
@@ -132,7 +132,7 @@ TEST(Reliability, CommandLineNumbersDoNotOverflow) {
 
 // Item 7: FIFOs and devices never block or read without limit.
 TEST(Reliability, FifosAndDevicesAreRefusedAtOnce) {
-  const std::string dir = make_scratch_dir("rel-fifo");
+  const std::string dir = scratch_dir("rel-fifo");
   ASSERT_EQ(::mkfifo((dir + "/fifo.toml").c_str(), 0644), 0);
   ASSERT_EQ(::mkfifo((dir + "/fifo.json").c_str(), 0644), 0);
   write_file(dir + "/t.toml", small_timeline(2));
@@ -155,7 +155,7 @@ TEST(Reliability, FifosAndDevicesAreRefusedAtOnce) {
 
 // Item 8: damaged, malformed and out-of-range manifests.
 TEST(Reliability, DamagedManifestDoesNotStopResume) {
-  const std::string dir = make_scratch_dir("rel-damaged");
+  const std::string dir = scratch_dir("rel-damaged");
   write_file(dir + "/t.toml", small_timeline(3));
   ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
   write_file(dir + "/out/manifest.json", "{\"format\": \"sdfreel-manifest-1\", \"frames\": [");
@@ -168,7 +168,7 @@ TEST(Reliability, DamagedManifestDoesNotStopResume) {
 }
 
 TEST(Reliability, MalformedManifestIsExitTwoLikeAMissingOne) {
-  const std::string dir = make_scratch_dir("rel-malformed");
+  const std::string dir = scratch_dir("rel-malformed");
   write_file(dir + "/t.toml", small_timeline(2));
   ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
   EXPECT_EQ(sdfreel_run("verify t.toml --manifest missing.json", dir).status, 2);
@@ -180,7 +180,7 @@ TEST(Reliability, MalformedManifestIsExitTwoLikeAMissingOne) {
 }
 
 TEST(Reliability, ManifestFrameIndexBeyondIntIsRefusedNotWrapped) {
-  const std::string dir = make_scratch_dir("rel-index");
+  const std::string dir = scratch_dir("rel-index");
   write_file(dir + "/t.toml", small_timeline(2));
   ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
   // Frame 0's entry renamed to index 2^40 (which an int wraps to 0): frame 0 is no longer listed.
@@ -193,7 +193,7 @@ TEST(Reliability, ManifestFrameIndexBeyondIntIsRefusedNotWrapped) {
 }
 
 TEST(Reliability, RenderWithOtherSettingsIntoALiveFolderIsRefused) {
-  const std::string dir = make_scratch_dir("rel-foreign");
+  const std::string dir = scratch_dir("rel-foreign");
   write_file(dir + "/t.toml", small_timeline(200));
   const std::string bin = "'" + sdfreel_binary() + "' ";
   // Shard 0 runs; shard 1 with other samples starts while it is live.

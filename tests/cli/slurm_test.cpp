@@ -42,10 +42,10 @@ std::vector<std::string> entries(const std::string& dir) {
 }
 
 TEST(Slurm, DryRunPrintsTheArrayAndEncodeScriptsAndWritesNothing) {
-  const std::string dir = make_scratch_dir("slurm-dry-run");
+  const std::string dir = scratch_dir("slurm-dry-run");
   write_file(dir + "/t.toml", small_timeline(6));
   const auto before = entries(dir);
-  const RunResult r = sdfreel(
+  const RunResult r = run_sdfreel(
       "slurm t.toml --tasks 3 --partition render --time 1:30:00 --cpus-per-task 2 "
       "--sbatch-arg=--account=vfx --sbatch-arg=--qos=high --backend osmesa --out farm --dry-run",
       dir);
@@ -82,10 +82,10 @@ TEST(Slurm, DryRunPrintsTheArrayAndEncodeScriptsAndWritesNothing) {
 }
 
 TEST(Slurm, TheScriptsRunAsSlurmWouldRenderTheSameFramesAsOneRender) {
-  const std::string dir = make_scratch_dir("slurm-by-hand");
+  const std::string dir = scratch_dir("slurm-by-hand");
   write_file(dir + "/t.toml", small_timeline(5));
-  ASSERT_EQ(sdfreel("render t.toml --out plain", dir).status, 0);
-  const RunResult r = sdfreel("slurm t.toml --tasks 3 --out farm --dry-run", dir);
+  ASSERT_EQ(run_sdfreel("render t.toml --out plain", dir).status, 0);
+  const RunResult r = run_sdfreel("slurm t.toml --tasks 3 --out farm --dry-run", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto s = sections(r.out);
   const std::string out = fs::canonical(dir).string() + "/farm";
@@ -116,9 +116,9 @@ TEST(Slurm, TheScriptsRunAsSlurmWouldRenderTheSameFramesAsOneRender) {
 }
 
 TEST(Slurm, ATaskFailsWhenAFrameOfItsShardCannotBeWritten) {
-  const std::string dir = make_scratch_dir("slurm-task-fails");
+  const std::string dir = scratch_dir("slurm-task-fails");
   write_file(dir + "/t.toml", small_timeline(4));
-  const RunResult r = sdfreel("slurm t.toml --tasks 2 --out farm --dry-run", dir);
+  const RunResult r = run_sdfreel("slurm t.toml --tasks 2 --out farm --dry-run", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string out = fs::canonical(dir).string() + "/farm";
   write_file(dir + "/render.sh", sections(r.out).at(out + "/slurm/render.sh"));
@@ -131,7 +131,7 @@ TEST(Slurm, ATaskFailsWhenAFrameOfItsShardCannotBeWritten) {
 }
 
 TEST(Slurm, SubmitsTheArrayThenTheEncodeAfterItWithSbatch) {
-  const std::string dir = make_scratch_dir("slurm-fake-sbatch");
+  const std::string dir = scratch_dir("slurm-fake-sbatch");
   write_file(dir + "/t.toml", small_timeline(4));
   // A stand-in sbatch: records its arguments, answers like --parsable (job id, maybe ;cluster).
   fs::create_directories(dir + "/bin");
@@ -154,7 +154,7 @@ TEST(Slurm, SubmitsTheArrayThenTheEncodeAfterItWithSbatch) {
 }
 
 TEST(Slurm, WithoutSbatchFailsAndWritesNothing) {
-  const std::string dir = make_scratch_dir("slurm-no-sbatch");
+  const std::string dir = scratch_dir("slurm-no-sbatch");
   write_file(dir + "/t.toml", small_timeline(4));
   fs::create_directories(dir + "/empty-bin");
   const auto before = entries(dir);
@@ -166,7 +166,7 @@ TEST(Slurm, WithoutSbatchFailsAndWritesNothing) {
 }
 
 TEST(Slurm, BadOptionsAreExit2AndWriteNothing) {
-  const std::string dir = make_scratch_dir("slurm-bad-options");
+  const std::string dir = scratch_dir("slurm-bad-options");
   write_file(dir + "/t.toml", small_timeline(4));
   write_file(dir + "/bad.toml", "[video]\nscene = \"sdf_morph\"\nfps = \"fast\"\n");
   // Should a bad option get through, this sbatch leaves a trace instead of submitting anything.
@@ -200,7 +200,7 @@ TEST(Slurm, BadOptionsAreExit2AndWriteNothing) {
     EXPECT_TRUE(contains(r.err, message)) << args << ": " << r.err;
     EXPECT_EQ(r.out, "") << args;
   }
-  const RunResult dry = sdfreel("slurm t.toml --tasks 2 --time soon --dry-run", dir);
+  const RunResult dry = run_sdfreel("slurm t.toml --tasks 2 --time soon --dry-run", dir);
   EXPECT_EQ(dry.status, 2) << dry.err;
   EXPECT_EQ(dry.out, "");
   EXPECT_EQ(entries(dir), before);
