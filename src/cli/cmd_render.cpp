@@ -88,21 +88,31 @@ int run_render(const RenderOptions& o) {
         VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf});
 
   Progress progress(int(frames.size()));
-  for (int i : frames) {
-    if (previous) {
-      auto it = previous->frames.find(i);
-      if (it != previous->frames.end()) {
-        if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
-          // Already listed in the manifest consolidated above.
-          if (encoder) encoder->add_frame(*shown);
-          progress.frame_done(i, 0.0, true);
-          continue;
+  try {
+    for (int i : frames) {
+      if (previous) {
+        auto it = previous->frames.find(i);
+        if (it != previous->frames.end()) {
+          if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
+            // Already listed in the manifest consolidated above.
+            if (encoder) encoder->add_frame(*shown);
+            progress.frame_done(i, 0.0, true);
+            continue;
+          }
         }
       }
+      RenderedFrame f = pipe.render(i);
+      publish_frame(dir, tl, header, f, encoder.get());
+      progress.frame_done(i, f.seconds);
     }
-    RenderedFrame f = pipe.render(i);
-    publish_frame(dir, tl, header, f, encoder.get());
-    progress.frame_done(i, f.seconds);
+  } catch (const std::exception&) {
+    // The frames finished before the failure are listed in manifest.json and frames.framemd5
+    // too, not only in the journal (best effort: the disk may be full).
+    try {
+      consolidate_manifest(dir, header);
+    } catch (const std::exception&) {
+    }
+    throw;
   }
   progress.finish();
   consolidate_manifest(dir, header);
