@@ -14,6 +14,7 @@
 //   glow_quadratic
 //   beam_speed        rate of the beams' horizontal sway (1 = their base rates)
 //   beam_sway         amplitude of the sway, world units
+//   beam_half_length  half the beams' length (0: both ends equal, a dot)
 //   flicker_depth     how far a flicker dims a beam: 0 never, 1 out
 //   occluder_x/_y     centre of the occluder (the seed's mouse): animate them for its path
 //   occluder_radius   its radius, world units
@@ -69,11 +70,17 @@ SceneInfo light_beams_scene_info() {
       scalar("glow_quadratic", 150.0, 0.0, 1e6, "glow: quadratic term, per square world unit"),
       scalar("beam_speed", 1.0, -10.0, 10.0, "rate of the beams' horizontal sway (1 = base)"),
       scalar("beam_sway", 0.3, 0.0, 2.0, "amplitude of the beams' sway, world units"),
+      scalar("beam_half_length", 1.4, 0.0, 1e6,
+             "half the beams' length, world units (1.4: beyond the default view's top and bottom)"),
       scalar("flicker_depth", 1.0, 0.0, 1.0, "how far a flicker dims a beam: 0 never, 1 out"),
       scalar("occluder_x", 0.0, -1e6, 1e6, "occluder centre x, world units (the seed's mouse)"),
       scalar("occluder_y", 0.0, -1e6, 1e6, "occluder centre y, world units"),
       scalar("occluder_radius", 0.16, 0.0, 1e6, "occluder radius, world units"),
-      ParamSpec{"background", 3, {0.01, 0.02, 0.05}, 0.0, 1.0,
+      ParamSpec{"background",
+                3,
+                {0.01, 0.02, 0.05},
+                0.0,
+                1.0,
                 "ground colour, linear Rec.709 (the seed's vec3(0.01, 0.02, 0.05))"},
   };
   info.default_camera = CameraPose{{0.0, 0.0, 1.0}, {0.0, 0.0, 0.0}, 90.0, 0.0};

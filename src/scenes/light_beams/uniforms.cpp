@@ -33,7 +33,6 @@ const BeamSpec BEAMS[BEAM_COUNT] = {
     {0.4f, 0.9f, 4.0f, 7.1, 1.3},
     {1.3f, 1.3f, 1.2f, 9.9, 0.6},
 };
-constexpr float BEAM_HALF_LENGTH = 1.4f;  // beyond the default view's top and bottom
 constexpr float BEAM_STROKE = 0.006f;
 const glm::vec3 BEAM_COLOR(0.75f, 0.85f, 1.0f);
 
@@ -59,12 +58,13 @@ BeamsUniforms make_beams_uniforms(const FrameContext& ctx) {
   const float sway = float(pv.scalar("beam_sway"));
   const float beam_gain = light_gain * float(pv.scalar("beam_intensity"));
   const float dropped = 1.0f - float(pv.scalar("flicker_depth"));
+  const float half_length = float(pv.scalar("beam_half_length"));
   for (int k = 0; k < BEAM_COUNT; ++k) {
     const BeamSpec& b = BEAMS[k];
     const float phase = dm::wrap_phase(ctx.scene_time * sway_rate * b.rate + b.phase, TWO_PI_D);
     const float x = b.x + sway * dm::sin(phase);
     const int i = FIRST_BEAM + k;
-    u.shapes[i] = Shape{SHAPE_SEGMENT, {x, -BEAM_HALF_LENGTH}, {x, BEAM_HALF_LENGTH}, BEAM_STROKE};
+    u.shapes[i] = Shape{SHAPE_SEGMENT, {x, -half_length}, {x, half_length}, BEAM_STROKE};
     u.color[i] = BEAM_COLOR;
     const bool off = flicker(b.flicker_seed, b.flicker_speed, ctx.scene_time);
     u.gain[i] = off ? beam_gain * dropped : beam_gain;
@@ -99,14 +99,10 @@ std::vector<ShaderUniform> beams_shader_uniforms(const BeamsUniforms& u) {
     return ShaderUniform{"u_beams." + name, 3, {v.x, v.y, v.z}};
   };
   std::vector<ShaderUniform> out = {
-      f("glow_constant", u.glow_constant),
-      f("glow_linear", u.glow_linear),
-      f("glow_quadratic", u.glow_quadratic),
-      v3("background", u.background),
-      f("estimator", float(u.estimator)),
-      f("shadow_steps", float(u.shadow_steps)),
-      f("min_hit_dist", u.min_hit_dist),
-      f("max_trace_dist", u.max_trace_dist),
+      f("glow_constant", u.glow_constant),     f("glow_linear", u.glow_linear),
+      f("glow_quadratic", u.glow_quadratic),   v3("background", u.background),
+      f("estimator", float(u.estimator)),      f("shadow_steps", float(u.shadow_steps)),
+      f("min_hit_dist", u.min_hit_dist),       f("max_trace_dist", u.max_trace_dist),
       f("hit_mask", u.hit_mask ? 1.0f : 0.0f),
   };
   // Arrays of structs are set element by element, arrays of plain types as a whole.

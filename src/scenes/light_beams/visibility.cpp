@@ -52,8 +52,7 @@ float nearestDist(vec2 p, int skip, const BeamsUniforms& u, RayStats& stats) {
   return d;
 }
 
-float seedShadow(vec2 p, int light, float dist_to_light, const BeamsUniforms& u,
-                 RayStats& stats) {
+float seedShadow(vec2 p, int light, float dist_to_light, const BeamsUniforms& u, RayStats& stats) {
   const vec2 v = closestPoint(p, u.shapes[light]) - p;
   const float len = lengthv(v);
   const vec2 dir = len > 0.0f ? v / len : vec2(1.0f, 0.0f);
