@@ -60,6 +60,19 @@ std::vector<CameraPose> poses(const SceneInfo& info) {
     up.target = up.position + glm::dvec3(0.2, 2.0, 0.5);
     out.push_back(up);
   }
+  if (info.name == "light_beams") {
+    // Close to the amber light and a beam (spans near pi, shadows of the beam), and a tilted,
+    // rolled view of the plane (perspective, rays that miss it above the horizon).
+    CameraPose near = info.default_camera;
+    near.position = glm::dvec3(-0.8, 0.3, 0.25);
+    near.target = glm::dvec3(-0.8, 0.3, 0.0);
+    near.roll_deg = 20.0;
+    out.push_back(near);
+    CameraPose tilted = info.default_camera;
+    tilted.position = glm::dvec3(0.2, -1.5, 0.6);
+    tilted.target = glm::dvec3(0.0, 0.3, 0.0);
+    out.push_back(tilted);
+  }
   return out;
 }
 
@@ -127,7 +140,7 @@ TEST_P(PacketPath, IndependentOfThreadsAndTileSize) {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (const char* s : {"sdf_morph", "lantern_festival"}) {
+  for (const char* s : {"sdf_morph", "lantern_festival", "light_beams"}) {
     out.push_back({s, Quality::Draft, 1});
     out.push_back({s, Quality::Final, 3});
     out.push_back({s, Quality::Final, 1, true});         // naive

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "scenes/light_beams/lanes.h"
 #include "scenes/light_beams/render.h"
 #include "scenes/light_beams/uniforms.h"
 #include "scenes/scene.h"
@@ -37,6 +38,9 @@ class LightBeamsScene : public Scene {
   void prepare(const FrameContext& ctx) override { u_ = light_beams::make_beams_uniforms(ctx); }
   glm::vec3 radiance(const Ray& ray, RayStats& stats) const override {
     return light_beams::sceneRadiance(ray, u_, stats);
+  }
+  void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override {
+    light_beams::radiancePacket(rays, u_, out, stats);
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return light_beams::beams_shader_uniforms(u_);
