@@ -47,5 +47,14 @@ TEST(Golden, LanternFestivalOsmesaMatchesCpuHashes) {
   check_golden("lantern_festival_small", "osmesa", "cpu");
 }
 
+// A scene folder's golden (tests/golden/<scene>/<name>.toml); the GLSL twin is bit-identical.
+TEST(Golden, LightBeamsCpu) {
+  check_golden("light_beams/light_beams_small", "cpu");
+}
+
+TEST(Golden, LightBeamsOsmesaMatchesCpuHashes) {
+  check_golden("light_beams/light_beams_small", "osmesa", "cpu");
+}
+
 }  // namespace
 }  // namespace sdfreel::test

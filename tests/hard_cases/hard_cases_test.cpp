@@ -24,6 +24,9 @@
 //   ray_along_lantern_axis boundInterval: a vertical ray is inside or outside as a whole
 //   cell_centre_rays       neighbourSign: sign(0) = +1 (lantern_festival_grid.h)
 //   crease_normals         safe_normalize: a tetrahedron normal whose taps cancel (sdf/sdf.h)
+//   light_beams/...        the 2D scene (src/scenes/light_beams): a pixel on a light's edge, a
+//                          segment with both ends equal, an occluder touching a light, a light
+//                          inside it, zoom 1e-3 and 1e3, TIME 1e6, 1x1 and 3x5 images
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,10 +61,12 @@ std::string case_dir() {
   return std::string(SDFREEL_SOURCE_DIR) + "/tests/hard_cases";
 }
 
+// Cases of one scene may sit in its folder (tests/hard_cases/<scene>/NAME.toml): "<scene>/NAME".
 std::vector<std::string> case_names() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(case_dir()))
-    if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  for (const auto& e : fs::recursive_directory_iterator(case_dir()))
+    if (e.path().extension() == ".toml")
+      names.push_back(fs::relative(e.path(), case_dir()).replace_extension().generic_string());
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -127,7 +132,9 @@ TEST_P(HardCase, FiniteUncappedAndWithinBudget) {
 
 INSTANTIATE_TEST_SUITE_P(Timelines, HardCase, testing::ValuesIn(case_names()),
                          [](const testing::TestParamInfo<std::string>& info) {
-                           return info.param;
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '/', '_');
+                           return name;
                          });
 
 TEST(HardCases, SuiteIsComplete) {
