@@ -184,16 +184,67 @@ P8 turn8(P8 n, F8 a) {
   return P8{n.x * c - n.y * s, n.x * s + n.y * c};
 }
 
-// hiddenSpan: (lo, hi) where `hidden`, as the scalar code returns them.
-P8 hiddenSpan8(P8 p, const LightView8& lv, const Shape& light, const Shape& other, M8& hidden) {
+// hiddenSpan: (lo, hi) where `hidden`, as the scalar code returns them. Lanes outside `alive`
+// are don't-cares: when no alive lane's spans overlap, the depth test is skipped (as the scalar
+// code skips it for each point whose spans do not overlap).
+P8 hiddenSpan8(P8 p, const LightView8& lv, const Shape& light, const Shape& other, M8 alive,
+               M8& hidden) {
   const P8 o = angularSpan8(p, lv.n, other);
   const F8 lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
+  if (!any(alive & (lo < hi))) {
+    hidden = splat_mask(false);
+    return P8{lo, hi};
+  }
   const P8 dir = turn8(lv.n, 0.5f * (lo + hi));
   const F8 t_other = hitShape8(p, dir, other);
   const F8 t_light = hitShape8(p, dir, light);
   const M8 behind = (t_other == NO_HIT) | ((t_light != NO_HIT) & (t_light < t_other));
   hidden = (lo < hi) & ~behind;
   return P8{lo, hi};
+}
+
+// A cone of directions around the light's span, to skip shapes that surely miss it. Only a
+// shortcut: a skipped shape is one whose span, computed in full, could not overlap the light's
+// for any lane (CULL_MARGIN radians of slack cover the rounding of both), so skipping changes no
+// bit.
+constexpr float CULL_MARGIN = 1e-3f;
+struct LightCone8 {
+  P8 mid;       // unit direction of the span's middle
+  F8 cos_half;  // of half the span plus the margin
+  F8 sin_half;
+  M8 usable;  // half span plus margin <= pi/2 (so that half span + a disc's half angle < pi)
+};
+
+LightCone8 coneOf8(const LightView8& lv) {
+  LightCone8 c;
+  c.mid = turn8(lv.n, 0.5f * (lv.span.x + lv.span.y));
+  const F8 half = 0.5f * (lv.span.y - lv.span.x) + CULL_MARGIN;
+  c.cos_half = dm::cos(half);
+  c.sin_half = dm::sin(half);
+  c.usable = half <= dm::HALF_PI;
+  return c;
+}
+
+// True for lanes where the disc (c, r), which holds the whole shape, lies outside the cone.
+M8 missesCone8(P8 p, const LightCone8& cone, vec2 c, float r) {
+  const P8 w = sub(c, p);
+  const F8 dist = length8(w);
+  const F8 sin_disc = r / dist;
+  const F8 cos_disc = dm::sqrt(dm::max(1.0f - sin_disc * sin_disc, 0.0f));
+  const F8 cos_limit = cone.cos_half * cos_disc - cone.sin_half * sin_disc;
+  const F8 cos_angle = dot8(cone.mid, w) / dist;
+  return cone.usable & (sin_disc < 1.0f) & (cos_angle < cos_limit);
+}
+
+// A disc that holds the shape.
+void boundOf(const Shape& s, vec2& c, float& r) {
+  if (s.type == SHAPE_CIRCLE) {
+    c = s.a;
+    r = s.r;
+    return;
+  }
+  c = 0.5f * (s.a + s.b);
+  r = 0.5f * lengthv(s.b - s.a) + s.r;
 }
 
 // penumbraVisibility / exactVisibility for the lanes in `active`.
@@ -207,14 +258,21 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u, R
   F8 vis = splat(1.0f);
   P8 slots[SHAPE_COUNT - 1];  // exact: the hidden intervals, in the order of the shapes
   int n = 0;
+  const LightCone8 cone = coneOf8(lv);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
     if (j == light) continue;
+    if (!any(alive)) break;  // every lane has its answer: no more counts, no more work
     stats.sdf_evals += count_lanes(alive);
     const M8 in = alive & (shapeSDF8(p, u.shapes[j]) <= 0.0f);
     dark |= in;
     alive &= ~in;
-    M8 hidden;
-    const P8 h = hiddenSpan8(p, lv, l, u.shapes[j], hidden);
+    M8 hidden = splat_mask(false);
+    P8 h{splat(0.0f), splat(0.0f)};
+    vec2 bc;
+    float br;
+    boundOf(u.shapes[j], bc, br);
+    if (any(alive & ~missesCone8(p, cone, bc, br)))
+      h = hiddenSpan8(p, lv, l, u.shapes[j], alive, hidden);
     if (exact) {
       slots[n++] = P8{select(hidden, h.x, splat(EMPTY_SLOT)), h.y};
     } else {
