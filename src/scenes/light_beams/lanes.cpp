@@ -306,6 +306,44 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u, R
   return select(wide, select(dark, splat(0.0f), vis), splat(1.0f));
 }
 
+// The seed's getNearestDist and its one-ray shadow (seedShadow) for the lanes in `active`: each
+// lane marches until it hits, passes the light or runs out of steps.
+F8 nearestDist8(P8 p, int skip, M8 active, const BeamsUniforms& u, RayStats& stats) {
+  F8 d = splat(1e30f);
+  for (int j = 0; j < SHAPE_COUNT; ++j) {
+    if (j == skip) continue;
+    stats.sdf_evals += count_lanes(active);
+    d = dm::min(d, shapeSDF8(p, u.shapes[j]));
+  }
+  return d;
+}
+
+F8 seedShadow8(P8 p, int light, F8 dist_to_light, M8 active, const BeamsUniforms& u,
+               RayStats& stats) {
+  const Shape& l = u.shapes[light];
+  // closestPoint
+  const P8 c = corePoint8(p, l);
+  const P8 pc{p.x - c.x, p.y - c.y};
+  const F8 pc_len = length8(pc);
+  const P8 q = select8(pc_len > 0.0f, P8{c.x + pc.x * (l.r / pc_len), c.y + pc.y * (l.r / pc_len)},
+                       P8{c.x + l.r, c.y + 0.0f});
+  const P8 v{q.x - p.x, q.y - p.y};
+  const F8 len = length8(v);
+  const P8 dir = select8(len > 0.0f, P8{v.x / len, v.y / len}, P8{splat(1.0f), splat(0.0f)});
+  F8 t = splat(0.0f);
+  F8 res = splat(1.0f);
+  for (int i = 0; i < u.shadow_steps && any(active); ++i) {
+    stats.steps += count_lanes(active);
+    const F8 h = nearestDist8(P8{p.x + dir.x * t, p.y + dir.y * t}, light, active, u, stats);
+    const M8 hit = active & (h <= u.min_hit_dist);
+    res = select(hit, splat(0.0f), res);
+    active &= ~hit;
+    t = select(active, t + dm::clamp(h, u.min_hit_dist, u.max_trace_dist), t);
+    active &= ~((t > dist_to_light) | (t > u.max_trace_dist));
+  }
+  return res;
+}
+
 F8 cornerFade8(P8 p) {
   const F8 r = length8(P8{p.x * FRAME_X_SCALE, p.y});
   return 1.0f - dm::smoothstep(FADE_INNER, FADE_OUTER, r);
@@ -315,7 +353,7 @@ F8 cornerFade8(P8 p) {
 
 void radiancePacket(const RayPacket& rays, const BeamsUniforms& u, glm::vec3* out,
                     RayStats& stats) {
-  if (u.hit_mask || u.estimator == ESTIMATOR_SEED_RAY) {
+  if (u.hit_mask) {
     for (int i = 0; i < rays.count; ++i) out[i] = sceneRadiance(rays.ray(i), u, stats);
     return;
   }
@@ -335,7 +373,9 @@ void radiancePacket(const RayPacket& rays, const BeamsUniforms& u, glm::vec3* ou
     const F8 fade = 1.0f * (1.0f - u.fades[i]) + cornerFade8(p) * u.fades[i];
     const F8 gain = u.gain[i] * fade;
     const M8 inside = d <= 0.0f;
-    const F8 vis = visibility8(p, i, live & ~inside, exact, u, stats);
+    const F8 vis = u.estimator == ESTIMATOR_SEED_RAY
+                       ? seedShadow8(p, i, d, live & ~inside, u, stats)
+                       : visibility8(p, i, live & ~inside, exact, u, stats);
     const F8 att = 1.0f / (u.glow_constant + u.glow_linear * d + u.glow_quadratic * (d * d));
     const glm::vec3 c = u.color[i];
     const F8 edge = smoothstep8(aa_width, d);

@@ -1,8 +1,8 @@
 #pragma once
-// light_beams in eight lanes: the CPU backend's packet path for the penumbra and exact estimators
-// (every preset but the bench's naive, whose seed march stays scalar lane by lane). Each lane
+// light_beams in eight lanes: the CPU backend's packet path for every estimator (the seed's
+// march, penumbra, exact); the hit-mask debug output stays scalar lane by lane. Each lane
 // performs the scalar operations of render.cpp and visibility.cpp in the same order: same bits,
-// same RayStats (tests/scenes/light_beams/lanes_test.cpp).
+// same RayStats (tests/scenes/packet_path_test.cpp).
 #include <glm/glm.hpp>
 
 #include "scenes/light_beams/uniforms.h"
