@@ -1,6 +1,7 @@
 #include "scenes/light_beams/lanes.h"
 
 #include "scenes/light_beams/render.h"
+#include "scenes/light_beams/visibility.h"
 
 namespace sdfreel::light_beams {
 namespace {
@@ -386,6 +387,21 @@ void radiancePacket(const RayPacket& rays, const BeamsUniforms& u, glm::vec3* ou
   }
   for (int i = 0; i < rays.count; ++i)
     out[i] = lane(on_plane, i) ? glm::vec3(r[i], g[i], b[i]) : u.background;
+}
+
+std::vector<DistanceFunction> beamsDistanceFunctions(const BeamsUniforms& u) {
+  // The seed's getNearestDist over every shape, at (x, y) of the points (the plane ignores z).
+  DistanceFunction nearest{"getNearestDist", nullptr, nullptr};
+  nearest.scalar = [u](const float* x, const float* y, const float*, float* d, int n) {
+    RayStats ignored;
+    for (int i = 0; i < n; ++i) d[i] = nearestDist(vec2(x[i], y[i]), -1, u, ignored);
+  };
+  nearest.lanes = [u](const float* x, const float* y, const float*, float* d, int n) {
+    RayStats ignored;
+    for (int i = 0; i < n; i += LANES)
+      store8(d + i, nearestDist8(P8{load8(x + i), load8(y + i)}, -1, splat_mask(true), u, ignored));
+  };
+  return {nearest};
 }
 
 }  // namespace sdfreel::light_beams

@@ -42,6 +42,9 @@ class LightBeamsScene : public Scene {
   void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override {
     light_beams::radiancePacket(rays, u_, out, stats);
   }
+  std::vector<DistanceFunction> distance_functions() const override {
+    return light_beams::beamsDistanceFunctions(u_);
+  }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return light_beams::beams_shader_uniforms(u_);
   }
