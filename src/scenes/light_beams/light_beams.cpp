@@ -57,6 +57,19 @@ ParamSpec scalar(const char* name, double def, double min, double max, const cha
   return ParamSpec{name, 1, {def}, min, max, doc};
 }
 
+// Close to the amber light and a beam (spans near pi, shadows of the beam), and a tilted, rolled
+// view of the plane (perspective, rays that miss it above the horizon).
+std::vector<CameraPose> test_poses(const CameraPose& def) {
+  CameraPose near = def;
+  near.position = glm::dvec3(-0.8, 0.3, 0.25);
+  near.target = glm::dvec3(-0.8, 0.3, 0.0);
+  near.roll_deg = 20.0;
+  CameraPose tilted = def;
+  tilted.position = glm::dvec3(0.2, -1.5, 0.6);
+  tilted.target = glm::dvec3(0.0, 0.3, 0.0);
+  return {near, tilted};
+}
+
 }  // namespace
 
 SceneInfo light_beams_scene_info() {
@@ -91,6 +104,7 @@ SceneInfo light_beams_scene_info() {
                 "ground colour, linear Rec.709 (the seed's vec3(0.01, 0.02, 0.05))"},
   };
   info.default_camera = CameraPose{{0.0, 0.0, 1.0}, {0.0, 0.0, 0.0}, 90.0, 0.0};
+  info.test_poses = test_poses(info.default_camera);
   info.shader = "light_beams/light_beams.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new LightBeamsScene()); };
   return info;
