@@ -6,7 +6,8 @@
 // list keeps the order stable.
 #define SDFREEL_SCENES(SCENE) \
   SCENE(sdf_morph)            \
-  SCENE(lantern_festival)
+  SCENE(lantern_festival)     \
+  SCENE(light_beams)
 
 namespace sdfreel {
 

@@ -108,8 +108,12 @@ TEST_P(Agreement, BothBackendsGiveTheSameBits) {
   for (size_t i = 0; i < poses.size(); ++i)
     evals +=
         expect_identical(context(*info, GetParam().mode, poses[i]), "pose " + std::to_string(i));
-  // The case compares marched surfaces, not only background.
-  EXPECT_GT(evals, uint64_t(W * H) * poses.size());
+  // A marching case compares marched surfaces, not only background. A hit mask may be drawn
+  // without counted evaluations (light_beams names the shape under the pixel directly), and a
+  // parameter extreme may switch the scene's lights off: there the bits alone are compared.
+  const Mode m = GetParam().mode;
+  if (m == Mode::Draft || m == Mode::Final || m == Mode::Reference || m == Mode::Naive)
+    EXPECT_GT(evals, uint64_t(W * H) * poses.size());
 }
 
 std::vector<Case> cases() {
