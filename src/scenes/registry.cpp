@@ -6,11 +6,13 @@ namespace sdfreel {
 // libraries drop unreferenced objects, and an explicit list keeps the order stable.
 SceneInfo sdf_morph_scene_info();
 SceneInfo lantern_festival_scene_info();
+SceneInfo water_lily_scene_info();
 
 const std::vector<SceneInfo>& all_scenes() {
   static const std::vector<SceneInfo> scenes = {
       sdf_morph_scene_info(),
       lantern_festival_scene_info(),
+      water_lily_scene_info(),
   };
   return scenes;
 }

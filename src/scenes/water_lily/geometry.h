@@ -1,0 +1,216 @@
+#pragma once
+// water_lily geometry: lilies from layers of reshaped spheres and lily pads from a flattened
+// cylinder with a notch, after seed 001. The water plane y = 0 is not marched (render.cpp).
+// Mirrored line for line in shaders/water_lily/geometry.glsl.
+#include <glm/glm.hpp>
+
+#include "scenes/water_lily/layout.h"
+#include "scenes/water_lily/uniforms.h"
+#include "sdf/det_math.h"
+#include "sdf/sdf.h"
+
+namespace sdfreel::water_lily {
+
+constexpr float PETAL_DIV = dm::TWO_PI / float(PETALS_PER_LAYER);  // angle per petal
+// The blanket factor of the Shadertoy the seed cites (4sKBW3), kept by the naive preset.
+constexpr float NAIVE_PETAL_FACTOR = 0.1f;
+constexpr float BIG_DISTANCE = 1e10f;
+constexpr float MIN_ELLIPSOID_GRADIENT = 1e-6f;
+
+// The seed's flattened sphere: the sphere of radius r.x fed the point scaled by r.x / r, an
+// ellipsoid with half axes r. Its Lipschitz constant is the largest scale, r.x / r.y for a petal
+// (thin in y). Quilez's gradient-corrected ellipsoid estimate would be tighter near the surface,
+// but it is not Lipschitz far from a flat ellipsoid (measured: 10x steeper than a distance at
+// 0.5 petal lengths away), so it cannot be stepped with.
+inline float sdFlattenedSphere(const glm::vec3& p, const glm::vec3& r) {
+  return sdSphere(p * (r.x / r), r.x);
+}
+
+// Quilez's ellipsoid estimate: close to the true distance near the surface, which is what the
+// soft shadows' penumbra needs (the bound above, divided by its Lipschitz constant, would darken
+// penumbras by up to that constant). Never used to step.
+inline float ellipsoidEstimate(const glm::vec3& p, const glm::vec3& r) {
+  const float k0 = glm::length(p / r);
+  const float k1 = glm::length(p / (r * r));
+  return k0 * (k0 - 1.0f) / dm::max(k1, MIN_ELLIPSOID_GRADIENT);
+}
+
+// Spectral norm of [[m, k], [0, m]] (m, k >= 0): the largest stretch of a shear-like map.
+inline float shearNorm(float m, float k) {
+  return 0.5f * (dm::sqrt(4.0f * m * m + k * k) + k);
+}
+
+// Lipschitz bound of one reshaped petal layer at curl rate c (per-flower curl times the layer's):
+// the product of the stretches of its maps, each a spectral norm. The pointed polar map
+// r = rho (1 + k |a|) has Jacobian [[m, k], [0, m]] in (radial, tangential) frames, m = 1 + k |a|
+// with |a| up to one division (the neighbour petal); the curl's twist (angle c min(s, extent))
+// has [[1, 0], [c s, 1]] with c s <= c * extent; the flattening scales by at most r.x / r.y.
+// tests/scenes/water_lily/lipschitz_test.cpp measures that the product is a bound, and a tight one.
+inline float petalLipschitz(const PetalLayer& layer, float c) {
+  const float polar = shearNorm(1.0f + PETAL_POINT * PETAL_DIV, PETAL_POINT);
+  const float twist = shearNorm(1.0f, c * (layer.reach + layer.radii.x));
+  const float flatten = layer.radii.x / layer.radii.y;
+  return polar * twist * flatten;
+}
+
+// Lipschitz bound of a pad whose rim is lifted by curl (rho / R)^2: the lift's slope at its reach.
+inline float leafLipschitz(const LeafPlacement& leaf) {
+  const float slope = 2.0f * leaf.curl * LEAF_CURL_REACH / leaf.radius;
+  return shearNorm(1.0f, slope);
+}
+
+// One petal of a layer, at polar radius rho and angle a off its axis, height y above the layer's
+// plane (flower units). Pointed: r = rho (1 + k |a|); curled: the (x, y) plane turned back by
+// curl * min(s, extent); flattened and fed to the sphere. Returns the raw value (not yet / L)
+// and the penumbra estimate.
+inline glm::vec2 petal(float rho, float a, float y, const PetalLayer& layer, float c) {
+  const float r = rho * (1.0f + PETAL_POINT * dm::abs(a));
+  const float x = r * dm::cos(a);
+  const float z = r * dm::sin(a);
+  const float s = dm::sqrt(x * x + y * y);
+  const float phi = c * dm::min(s, layer.reach + layer.radii.x);
+  const float cs = dm::cos(phi), sn = dm::sin(phi);
+  const float xc = cs * x + sn * y;
+  const float yc = cs * y - sn * x;
+  const glm::vec3 e(xc - layer.reach, yc, z);
+  return glm::vec2(sdFlattenedSphere(e, layer.radii), ellipsoidEstimate(e, layer.radii));
+}
+
+// One layer of PETALS_PER_LAYER petals around the flower axis: the point's angle folded into one
+// division, and the petal of the neighbouring division too (a curled petal reaches over the
+// border). q in flower units, relative to the flower's centre on the water. Returns the bound
+// (raw / Lipschitz bound; naive: raw * 0.1) and the penumbra estimate.
+inline glm::vec2 petalLayer(const glm::vec3& q, int l, float turn, float c, const LilyUniforms& u) {
+  const PetalLayer& layer = LAYERS[l];
+  const float rho = dm::sqrt(q.x * q.x + q.z * q.z);
+  const float angle = dm::atan2(q.z, q.x) - (turn + layer.turn);
+  const float a = dm::mod(angle, PETAL_DIV) - 0.5f * PETAL_DIV;
+  const float a2 = a >= 0.0f ? a - PETAL_DIV : a + PETAL_DIV;
+  const float y = q.y - layer.base_y;
+  const float cl = c * layer.curl;
+  const glm::vec2 p1 = petal(rho, a, y, layer, cl);
+  const glm::vec2 p2 = petal(rho, a2, y, layer, cl);
+  const float d = dm::min(p1.x, p2.x);
+  const float bound = u.naive ? d * NAIVE_PETAL_FACTOR : d / u.petal_lipschitz[l];
+  return glm::vec2(bound, dm::min(p1.y, p2.y));
+}
+
+// The flower's coloured centre: a sphere of stamens.
+inline float flowerCenter(const glm::vec3& q) {
+  return sdSphere(q - glm::vec3(0.0f, CENTER_Y, 0.0f), CENTER_RADIUS);
+}
+
+inline glm::vec3 toFlower(const glm::vec3& p, int f) {
+  const FlowerPlacement& fl = FLOWERS[f];
+  return (p - glm::vec3(fl.xz.x, 0.0f, fl.xz.y)) / fl.scale;
+}
+
+// A water lily: the layers blended where they meet, the centre blended into the inner petals.
+// Returns the bound and the penumbra estimate (world units).
+inline glm::vec2 lilyFlowerPair(const glm::vec3& p, int f, const LilyUniforms& u) {
+  const FlowerPlacement& fl = FLOWERS[f];
+  const glm::vec3 q = toFlower(p, f);
+  glm::vec2 d = petalLayer(q, 0, fl.turn, u.curl[f], u);
+  for (int l = 1; l < PETAL_LAYERS; ++l) {
+    const glm::vec2 e = petalLayer(q, l, fl.turn, u.curl[f], u);
+    d = glm::vec2(opSmoothUnion(d.x, e.x, LAYER_BLEND), opSmoothUnion(d.y, e.y, LAYER_BLEND));
+  }
+  const float c = flowerCenter(q);
+  d = glm::vec2(opSmoothUnion(d.x, c, CENTER_BLEND), opSmoothUnion(d.y, c, CENTER_BLEND));
+  return d * fl.scale;
+}
+
+inline float lilyFlower(const glm::vec3& p, int f, const LilyUniforms& u) {
+  return lilyFlowerPair(p, f, u).x;
+}
+
+inline glm::vec2 leafCenter(int i, const LilyUniforms& u) {
+  return i == DRIFTING_LEAF ? LEAVES[i].xz + u.drift_offset : LEAVES[i].xz;
+}
+
+// Pad-local frame: centred, rim lift removed (curled leaves), turned so the notch opens along +x.
+inline glm::vec3 toLeaf(const glm::vec3& p, int i, const LilyUniforms& u) {
+  const LeafPlacement& leaf = LEAVES[i];
+  const glm::vec2 c = leafCenter(i, u);
+  const glm::vec3 q = p - glm::vec3(c.x, LEAF_Y, c.y);
+  const float rho = dm::sqrt(q.x * q.x + q.z * q.z);
+  const float e = dm::min(rho, leaf.radius * LEAF_CURL_REACH) / leaf.radius;
+  const float lift = leaf.curl * e * e;
+  const float cs = dm::cos(leaf.notch_angle), sn = dm::sin(leaf.notch_angle);
+  return glm::vec3(cs * q.x + sn * q.z, q.y - lift, cs * q.z - sn * q.x);
+}
+
+// The notch: two boxes, each displaced so that one face runs through the pad's centre at
+// +-NOTCH_HALF_ANGLE; their intersection is the V cut out of the pad.
+inline float leafNotch(const glm::vec3& q, float radius) {
+  const float ca = dm::cos(NOTCH_HALF_ANGLE), sa = dm::sin(NOTCH_HALF_ANGLE);
+  const glm::vec3 half(1.2f * radius, 0.2f, radius);
+  const glm::vec3 qa(ca * q.x + sa * q.z - radius, q.y, ca * q.z - sa * q.x + radius);
+  const glm::vec3 qb(ca * q.x - sa * q.z - radius, q.y, ca * q.z + sa * q.x - radius);
+  return opIntersection(sdBox(qa, half), sdBox(qb, half));
+}
+
+// A lily pad: a flattened cylinder minus the notch.
+inline float lilyPad(const glm::vec3& p, int i, const LilyUniforms& u) {
+  const glm::vec3 q = toLeaf(p, i, u);
+  const float pad = sdCappedCylinder(q, LEAF_HALF_H, LEAVES[i].radius);
+  const float d = opSubtraction(leafNotch(q, LEAVES[i].radius), pad);
+  return u.naive ? d : d / u.leaf_lipschitz[i];
+}
+
+// ---- bounds: cheap lower bounds that stand in for far parts ----
+
+inline float flowerBound(const glm::vec3& p, int f) {
+  const FlowerPlacement& fl = FLOWERS[f];
+  const glm::vec3 c(fl.xz.x, FLOWER_BOUND_Y * fl.scale, fl.xz.y);
+  return glm::length(p - c) - FLOWER_BOUND_RADIUS * fl.scale;
+}
+
+inline float leafBound(const glm::vec3& p, int i, const LilyUniforms& u) {
+  const glm::vec2 c = leafCenter(i, u);
+  const float dx = p.x - c.x, dz = p.z - c.y;
+  const float side = dm::sqrt(dx * dx + dz * dz) - LEAVES[i].radius;
+  const float vertical = dm::abs(p.y - LEAF_Y) - (LEAF_HALF_H + LEAVES[i].curl);
+  return dm::max(side, vertical);
+}
+
+// What a marched point is: which flower or leaf is nearest.
+struct Nearest {
+  float d = BIG_DISTANCE;
+  float est = BIG_DISTANCE;  // penumbra estimate of the nearest part (soft shadows)
+  bool exact = true;         // false: a bound stood in for the nearest part
+  int flower = -1;           // index of the nearest flower, or -1
+  int leaf = -1;             // index of the nearest leaf, or -1
+};
+
+// Every marched surface. Parts whose bound exceeds `margin` contribute the bound (the naive
+// preset uses no bounds).
+inline Nearest mapNearest(const glm::vec3& p, const LilyUniforms& u, float margin) {
+  Nearest n;
+  for (int i = 0; i < LEAF_COUNT; ++i) {
+    const float b = u.naive ? -1.0f : leafBound(p, i, u);
+    const bool far = b > margin;
+    const float d = far ? b : lilyPad(p, i, u);
+    if (d < n.d) {
+      n.d = d;
+      n.est = d;
+      n.exact = !far;
+      n.leaf = i;
+    }
+  }
+  for (int f = 0; f < FLOWER_COUNT; ++f) {
+    const float b = u.naive ? -1.0f : flowerBound(p, f);
+    const bool far = b > margin;
+    const glm::vec2 d = far ? glm::vec2(b) : lilyFlowerPair(p, f, u);
+    if (d.x < n.d) {
+      n.d = d.x;
+      n.est = d.y;
+      n.exact = !far;
+      n.flower = f;
+      n.leaf = -1;
+    }
+  }
+  return n;
+}
+
+}  // namespace sdfreel::water_lily
