@@ -10,7 +10,7 @@ const float MIN_ELLIPSOID_GRADIENT = 1e-6;
 
 float sdFlattenedSphere(vec3 p, vec3 r) { return sdSphere(p * (r.x / r), r.x); }
 
-float ellipsoidEstimate(vec3 p, vec3 r) {
+float ellipsoidBound(vec3 p, vec3 r) {
   precise float k0 = dm_length(p / r);
   precise float k1 = dm_length(p / (r * r));
   return k0 * (k0 - 1.0) / dm_max(k1, MIN_ELLIPSOID_GRADIENT);
@@ -26,7 +26,7 @@ vec2 petal(float rho, float a, float y, PetalLayer layer, float c) {
   precise float xc = cs * x + sn * y;
   precise float yc = cs * y - sn * x;
   precise vec3 e = vec3(xc - layer.reach, yc, z);
-  return vec2(sdFlattenedSphere(e, layer.radii), ellipsoidEstimate(e, layer.radii));
+  return vec2(sdFlattenedSphere(e, layer.radii), ellipsoidBound(e, layer.radii));
 }
 
 vec2 petalLayer(vec3 q, int l, float turn, float c, LilyUniforms u) {
@@ -39,9 +39,10 @@ vec2 petalLayer(vec3 q, int l, float turn, float c, LilyUniforms u) {
   precise float cl = c * layer.curl;
   precise vec2 p1 = petal(rho, a, y, layer, cl);
   precise vec2 p2 = petal(rho, a2, y, layer, cl);
-  precise float d = dm_min(p1.x, p2.x);
-  precise float bound = u.naive != 0 ? d * NAIVE_PETAL_FACTOR : d / u.petal_lipschitz[l];
-  return vec2(bound, dm_min(p1.y, p2.y));
+  precise float e = dm_min(p1.y, p2.y);
+  precise float bound =
+      u.naive != 0 ? dm_min(p1.x, p2.x) * NAIVE_PETAL_FACTOR : e / u.petal_lipschitz[l];
+  return vec2(bound, e);
 }
 
 float flowerCenter(vec3 q) { return sdSphere(q - vec3(0.0, CENTER_Y, 0.0), CENTER_RADIUS); }
@@ -118,9 +119,9 @@ struct Nearest {
   int leaf;
 };
 
-Nearest mapNearest(vec3 p, LilyUniforms u, float margin) {
+Nearest mapNearest(vec3 p, LilyUniforms u, float margin, bool leaves) {
   Nearest n = Nearest(BIG_DISTANCE, BIG_DISTANCE, true, -1, -1);
-  for (int i = 0; i < LEAF_COUNT; ++i) {
+  for (int i = 0; i < (leaves ? LEAF_COUNT : 0); ++i) {
     precise float b = u.naive != 0 ? -1.0 : leafBound(p, i, u);
     bool far = b > margin;
     precise float d = far ? b : lilyPad(p, i, u);

@@ -77,3 +77,5 @@ const float SUBMERGED_DEPTH = 0.12;
 // ---- the slab of marched surfaces ----
 const float SLAB_BOTTOM = -0.01;
 const float SLAB_TOP = 0.62;
+const vec3 FIELD_MIN = vec3(-4.6, SLAB_BOTTOM, -0.8);
+const vec3 FIELD_MAX = vec3(4.3, SLAB_TOP, 10.0);

@@ -26,17 +26,27 @@ const float SHADOW_MIN_DENOM = 1e-6;
 const float SHADOW_MIN_STEP = 1e-4;
 const float FILL_SHADOW_SOFTNESS = 0.35;
 const float REFLECT_MAX_DIST = 14.0;
+const float REFLECT_HIT_SCALE = 4.0;
 
 vec3 skyColor(vec3 d, LilyUniforms u);
 
-vec2 slabSpan(vec3 ro, vec3 rd) {
-  if (rd.y == 0.0) {
-    bool inside = ro.y > SLAB_BOTTOM && ro.y < SLAB_TOP;
-    return inside ? vec2(0.0, BIG_DISTANCE) : vec2(1.0, 0.0);
+vec2 axisSpan(float o, float d, float lo, float hi) {
+  if (d == 0.0) {
+    bool inside = o > lo && o < hi;
+    return inside ? vec2(-BIG_DISTANCE, BIG_DISTANCE) : vec2(BIG_DISTANCE, -BIG_DISTANCE);
   }
-  precise float ta = (SLAB_BOTTOM - ro.y) / rd.y;
-  precise float tb = (SLAB_TOP - ro.y) / rd.y;
-  return vec2(dm_max(dm_min(ta, tb), 0.0), dm_max(ta, tb));
+  precise float ta = (lo - o) / d;
+  precise float tb = (hi - o) / d;
+  return vec2(dm_min(ta, tb), dm_max(ta, tb));
+}
+
+vec2 slabSpan(vec3 ro, vec3 rd) {
+  precise vec2 sx = axisSpan(ro.x, rd.x, FIELD_MIN.x, FIELD_MAX.x);
+  precise vec2 sy = axisSpan(ro.y, rd.y, FIELD_MIN.y, FIELD_MAX.y);
+  precise vec2 sz = axisSpan(ro.z, rd.z, FIELD_MIN.z, FIELD_MAX.z);
+  precise float enter = dm_max(dm_max(sx.x, sy.x), dm_max(sz.x, 0.0));
+  precise float exit = dm_min(dm_min(sx.y, sy.y), sz.y);
+  return vec2(enter, exit);
 }
 
 float intersectWater(vec3 ro, vec3 rd) {
@@ -52,20 +62,20 @@ float normalEps(float pixel_angle, float t, LilyUniforms u) {
 }
 float surfaceBias(float eps) { return dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps); }
 
-float mapScene(vec3 p, LilyUniforms u, inout RayStats stats) {
+float mapScene(vec3 p, bool leaves, LilyUniforms u, inout RayStats stats) {
   stats.sdf_evals += 1u;
-  return mapNearest(p, u, BOUND_MARGIN).d;
+  return mapNearest(p, u, BOUND_MARGIN, leaves).d;
 }
 
 float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_per_t,
-            float t_before, LilyUniforms u, inout RayStats stats) {
+            float t_before, bool leaves, LilyUniforms u, inout RayStats stats) {
   precise float t = tmin;
   precise float omega = u.naive != 0 ? 1.0 : u.step_factor;
   precise float prev_d = 0.0;
   precise float step = 0.0;
   for (int i = 0; i < max_steps; ++i) {
     stats.steps += 1u;
-    precise float d = mapScene(ro + rd * t, u, stats);
+    precise float d = mapScene(ro + rd * t, leaves, u, stats);
     if (omega > 1.0 && abs(d) + prev_d < step) {
       t += prev_d - step;
       step = prev_d;
@@ -88,13 +98,13 @@ float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_p
   return t;
 }
 
-vec3 calcNormal(vec3 p, float e, LilyUniforms u, inout RayStats stats) {
+vec3 calcNormal(vec3 p, float e, bool leaves, LilyUniforms u, inout RayStats stats) {
   const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0),
              d = vec3(1.0, 1.0, 1.0);
-  precise float da = mapScene(p + a * e, u, stats);
-  precise float db = mapScene(p + b * e, u, stats);
-  precise float dc = mapScene(p + c * e, u, stats);
-  precise float dd = mapScene(p + d * e, u, stats);
+  precise float da = mapScene(p + a * e, leaves, u, stats);
+  precise float db = mapScene(p + b * e, leaves, u, stats);
+  precise float dc = mapScene(p + c * e, leaves, u, stats);
+  precise float dd = mapScene(p + d * e, leaves, u, stats);
   return safe_normalize(a * da + b * db + c * dc + d * dd);
 }
 
@@ -112,21 +122,25 @@ float softShadow(vec3 ro, vec3 ld, float k, int steps, LilyUniforms u, inout Ray
   precise float t = dm_max(SHADOW_TMIN, u.naive != 0 ? 0.0 : span.x);
   precise float res = 1.0;
   precise float ph = SHADOW_FIRST_PH;
+  precise float step = 0.0;
   for (int i = 0; i < steps && t < tmax; ++i) {
     stats.steps += 1u;
     stats.sdf_evals += 1u;
-    Nearest n = mapNearest(ro + ld * t, u, dm_max(BOUND_MARGIN, t / k));
+    Nearest n = mapNearest(ro + ld * t, u, dm_max(BOUND_MARGIN, t / k), true);
     precise float h = n.est;
     if (h < SHADOW_HIT_EPS) return 0.0;
     if (n.exact) {
-      precise float y = h * h / (2.0 * ph);
+      precise float y = 0.0;
+      if (abs(h - ph) < step)
+        y = dm_max((h * h - ph * ph + step * step) / (2.0 * step), 0.0);
       precise float d = sqrt(dm_max(h * h - y * y, 0.0));
       res = dm_min(res, k * d / dm_max(t - y, SHADOW_MIN_DENOM));
       ph = h;
     } else {
       ph = SHADOW_FIRST_PH;
     }
-    t += dm_max(n.d, SHADOW_MIN_STEP);
+    step = dm_max(n.d, SHADOW_MIN_STEP);
+    t += step;
   }
   res = dm_clamp(res, 0.0, 1.0);
   return res * res * (3.0 - 2.0 * res);
@@ -161,8 +175,8 @@ struct Surface {
   float shininess;
 };
 
-Surface surfaceAt(vec3 p, LilyUniforms u) {
-  Nearest n = mapNearest(p, u, BOUND_MARGIN);
+Surface surfaceAt(vec3 p, bool leaves, LilyUniforms u) {
+  Nearest n = mapNearest(p, u, BOUND_MARGIN, leaves);
   if (n.flower >= 0) {
     precise vec3 q = toFlower(p, n.flower);
     precise float center = flowerCenter(q);
@@ -209,7 +223,7 @@ vec3 lightSurface(Surface s, vec3 n, vec3 rd, float sun_shadow, float fill_shado
 }
 
 vec3 shadeSurface(vec3 p, vec3 n, vec3 rd, float bias, LilyUniforms u, inout RayStats stats) {
-  Surface s = surfaceAt(p, u);
+  Surface s = surfaceAt(p, true, u);
   precise vec3 o = p + n * bias;
   bool sun_side = dm_dot(n, u.sun_dir) > 0.0 || s.translucent > 0.0;
   precise vec3 os = dm_dot(n, u.sun_dir) > 0.0 ? o : p - n * bias;
@@ -257,11 +271,12 @@ vec3 traceReflection(vec3 w, vec3 r, float t_before, float eps_per_t, float pixe
   precise vec2 span = slabSpan(w, r);
   precise float t1 = dm_min(span.y, u.naive != 0 ? u.max_dist : REFLECT_MAX_DIST);
   if (!(span.x < t1)) return sky;
-  precise float t = march(w, r, span.x, t1, u.reflect_steps, eps_per_t, t_before, u, stats);
+  precise float t = march(w, r, span.x, t1, u.reflect_steps, eps_per_t * REFLECT_HIT_SCALE,
+                          t_before, false, u, stats);
   if (t == NO_HIT) return sky;
   precise vec3 q = w + r * t;
-  precise vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), u, stats);
-  precise vec3 col = lightSurface(surfaceAt(q, u), nq, r, 1.0, 1.0, u);
+  precise vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), false, u, stats);
+  precise vec3 col = lightSurface(surfaceAt(q, false, u), nq, r, 1.0, 1.0, u);
   return dm_mix(sky, col, dm_exp(-REFLECT_FALLOFF * t));
 }
 
@@ -342,17 +357,17 @@ vec3 sceneRadiance(Ray ray, LilyUniforms u, inout RayStats stats) {
   precise vec2 span = u.naive != 0 ? vec2(0.0, u.max_dist) : slabSpan(ro, rd);
   precise float t1 = dm_min(span.y, water ? t_water : u.max_dist);
   precise float t = NO_HIT;
-  if (span.x < t1) t = march(ro, rd, span.x, t1, u.max_steps, eps_per_t, 0.0, u, stats);
+  if (span.x < t1) t = march(ro, rd, span.x, t1, u.max_steps, eps_per_t, 0.0, true, u, stats);
   if (u.hit_mask != 0) {
     if (t == NO_HIT) return vec3(HIT_ID_NONE);
-    return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER
+    return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN, true).flower >= 0 ? HIT_ID_FLOWER
                                                                       : HIT_ID_LEAF);
   }
   precise vec3 col;
   precise float dist;
   if (t != NO_HIT) {
     precise vec3 p = ro + rd * t;
-    precise vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), u, stats);
+    precise vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), true, u, stats);
     col = shadeSurface(p, n, rd, surfaceBias(hitEps(eps_per_t, t, u)), u, stats);
     dist = t;
   } else if (water) {

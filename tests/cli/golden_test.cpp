@@ -47,5 +47,14 @@ TEST(Golden, LanternFestivalOsmesaMatchesCpuHashes) {
   check_golden("lantern_festival_small", "osmesa", "cpu");
 }
 
+TEST(Golden, WaterLilyCpu) {
+  check_golden("water_lily/water_lily_small", "cpu");
+}
+
+// The GLSL twin renders the same bits as the C++ scene: held to the CPU backend's hashes.
+TEST(Golden, WaterLilyOsmesaMatchesCpuHashes) {
+  check_golden("water_lily/water_lily_small", "osmesa", "cpu");
+}
+
 }  // namespace
 }  // namespace sdfreel::test

@@ -24,6 +24,9 @@
 //   ray_along_lantern_axis boundInterval: a vertical ray is inside or outside as a whole
 //   cell_centre_rays       neighbourSign: sign(0) = +1 (lantern_festival_grid.h)
 //   crease_normals         safe_normalize: a tetrahedron normal whose taps cancel (sdf/sdf.h)
+//   water_lily/...         horizon_grazing (slabSpan), inside_petal (march: hit at tmin),
+//                          under_leaf (intersectWater), look_down_into_flower (atan2 at rho = 0),
+//                          time_1e6 (make_lily_uniforms), resolution_1x1, resolution_3x5
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,10 +61,15 @@ std::string case_dir() {
   return std::string(SDFREEL_SOURCE_DIR) + "/tests/hard_cases";
 }
 
+// Case names are paths under tests/hard_cases without .toml; per-scene folders included
+// ("water_lily/inside_petal").
 std::vector<std::string> case_names() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(case_dir()))
-    if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  for (const auto& e : fs::recursive_directory_iterator(case_dir()))
+    if (e.path().extension() == ".toml") {
+      const fs::path rel = fs::relative(e.path(), case_dir());
+      names.push_back((rel.parent_path() / rel.stem()).generic_string());
+    }
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -127,7 +135,9 @@ TEST_P(HardCase, FiniteUncappedAndWithinBudget) {
 
 INSTANTIATE_TEST_SUITE_P(Timelines, HardCase, testing::ValuesIn(case_names()),
                          [](const testing::TestParamInfo<std::string>& info) {
-                           return info.param;
+                           std::string name = info.param;  // test names allow no '/'
+                           std::replace(name.begin(), name.end(), '/', '_');
+                           return name;
                          });
 
 TEST(HardCases, SuiteIsComplete) {

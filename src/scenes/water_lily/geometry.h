@@ -18,18 +18,19 @@ constexpr float BIG_DISTANCE = 1e10f;
 constexpr float MIN_ELLIPSOID_GRADIENT = 1e-6f;
 
 // The seed's flattened sphere: the sphere of radius r.x fed the point scaled by r.x / r, an
-// ellipsoid with half axes r. Its Lipschitz constant is the largest scale, r.x / r.y for a petal
-// (thin in y). Quilez's gradient-corrected ellipsoid estimate would be tighter near the surface,
-// but it is not Lipschitz far from a flat ellipsoid (measured: 10x steeper than a distance at
-// 0.5 petal lengths away), so it cannot be stepped with.
+// ellipsoid with half axes r. Its Lipschitz constant is the largest scale, r.x / r.y (12 for the
+// outer petals): the 0.1 of the Shadertoy the seed cites is not even a bound once the polar fold
+// and the curl stretch it further (tests/scenes/water_lily/bounds_test.cpp). The naive preset
+// keeps it with that blanket factor.
 inline float sdFlattenedSphere(const glm::vec3& p, const glm::vec3& r) {
   return sdSphere(p * (r.x / r), r.x);
 }
 
-// Quilez's ellipsoid estimate: close to the true distance near the surface, which is what the
-// soft shadows' penumbra needs (the bound above, divided by its Lipschitz constant, would darken
-// penumbras by up to that constant). Never used to step.
-inline float ellipsoidEstimate(const glm::vec3& p, const glm::vec3& r) {
+// The same sphere made a distance again (Quilez's ellipsoid bound): f = |p / r| - 1 divided by
+// the length of its gradient. f is convex, so f / |grad f| never exceeds the distance to the
+// ellipsoid from outside: a lower bound, tight near the surface from every side (not Lipschitz
+// far away, which sphere tracing does not need).
+inline float ellipsoidBound(const glm::vec3& p, const glm::vec3& r) {
   const float k0 = glm::length(p / r);
   const float k1 = glm::length(p / (r * r));
   return k0 * (k0 - 1.0f) / dm::max(k1, MIN_ELLIPSOID_GRADIENT);
@@ -40,17 +41,22 @@ inline float shearNorm(float m, float k) {
   return 0.5f * (dm::sqrt(4.0f * m * m + k * k) + k);
 }
 
-// Lipschitz bound of one reshaped petal layer at curl rate c (per-flower curl times the layer's):
-// the product of the stretches of its maps, each a spectral norm. The pointed polar map
-// r = rho (1 + k |a|) has Jacobian [[m, k], [0, m]] in (radial, tangential) frames, m = 1 + k |a|
-// with |a| up to one division (the neighbour petal); the curl's twist (angle c min(s, extent))
-// has [[1, 0], [c s, 1]] with c s <= c * extent; the flattening scales by at most r.x / r.y.
-// tests/scenes/water_lily/lipschitz_test.cpp measures that the product is a bound, and a tight one.
+// Lipschitz bound of the reshaping of one petal layer at curl rate c (per-flower curl times the
+// layer's): the product of the stretches of its maps, each a spectral norm. The pointed polar
+// map r = rho (1 + k |a|) has Jacobian [[m, k], [0, m]] in (radial, tangential) frames,
+// m = 1 + k |a| with |a| up to one division (the neighbour petal); the curl's twist (angle
+// c min(s, extent)) has [[1, 0], [c s, 1]] with c s <= c * extent. A map stretching at most L
+// brings no point more than L times closer to the petal: the ellipsoid bound / L is a distance
+// bound in the world (tests/scenes/water_lily/bounds_test.cpp checks empty unbounding spheres).
 inline float petalLipschitz(const PetalLayer& layer, float c) {
   const float polar = shearNorm(1.0f + PETAL_POINT * PETAL_DIV, PETAL_POINT);
   const float twist = shearNorm(1.0f, c * (layer.reach + layer.radii.x));
-  const float flatten = layer.radii.x / layer.radii.y;
-  return polar * twist * flatten;
+  return polar * twist;
+}
+
+// The seed's flattened sphere scales by up to this much more.
+inline float flattenLipschitz(const PetalLayer& layer) {
+  return layer.radii.x / layer.radii.y;
 }
 
 // Lipschitz bound of a pad whose rim is lifted by curl (rho / R)^2: the lift's slope at its reach.
@@ -73,13 +79,14 @@ inline glm::vec2 petal(float rho, float a, float y, const PetalLayer& layer, flo
   const float xc = cs * x + sn * y;
   const float yc = cs * y - sn * x;
   const glm::vec3 e(xc - layer.reach, yc, z);
-  return glm::vec2(sdFlattenedSphere(e, layer.radii), ellipsoidEstimate(e, layer.radii));
+  return glm::vec2(sdFlattenedSphere(e, layer.radii), ellipsoidBound(e, layer.radii));
 }
 
 // One layer of PETALS_PER_LAYER petals around the flower axis: the point's angle folded into one
 // division, and the petal of the neighbouring division too (a curled petal reaches over the
 // border). q in flower units, relative to the flower's centre on the water. Returns the bound
-// (raw / Lipschitz bound; naive: raw * 0.1) and the penumbra estimate.
+// (ellipsoid bound / the reshaping's Lipschitz bound; naive: the seed's sphere * 0.1) and the
+// penumbra estimate (the ellipsoid bound itself: near the true distance close to a petal).
 inline glm::vec2 petalLayer(const glm::vec3& q, int l, float turn, float c, const LilyUniforms& u) {
   const PetalLayer& layer = LAYERS[l];
   const float rho = dm::sqrt(q.x * q.x + q.z * q.z);
@@ -90,9 +97,9 @@ inline glm::vec2 petalLayer(const glm::vec3& q, int l, float turn, float c, cons
   const float cl = c * layer.curl;
   const glm::vec2 p1 = petal(rho, a, y, layer, cl);
   const glm::vec2 p2 = petal(rho, a2, y, layer, cl);
-  const float d = dm::min(p1.x, p2.x);
-  const float bound = u.naive ? d * NAIVE_PETAL_FACTOR : d / u.petal_lipschitz[l];
-  return glm::vec2(bound, dm::min(p1.y, p2.y));
+  const float e = dm::min(p1.y, p2.y);
+  const float bound = u.naive ? dm::min(p1.x, p2.x) * NAIVE_PETAL_FACTOR : e / u.petal_lipschitz[l];
+  return glm::vec2(bound, e);
 }
 
 // The flower's coloured centre: a sphere of stamens.
@@ -183,11 +190,12 @@ struct Nearest {
   int leaf = -1;             // index of the nearest leaf, or -1
 };
 
-// Every marched surface. Parts whose bound exceeds `margin` contribute the bound (the naive
-// preset uses no bounds).
-inline Nearest mapNearest(const glm::vec3& p, const LilyUniforms& u, float margin) {
+// Every marched surface (`leaves` false: the flowers only). Parts whose bound exceeds `margin`
+// contribute the bound (the naive preset uses no bounds).
+inline Nearest mapNearest(const glm::vec3& p, const LilyUniforms& u, float margin,
+                          bool leaves = true) {
   Nearest n;
-  for (int i = 0; i < LEAF_COUNT; ++i) {
+  for (int i = 0; i < (leaves ? LEAF_COUNT : 0); ++i) {
     const float b = u.naive ? -1.0f : leafBound(p, i, u);
     const bool far = b > margin;
     const float d = far ? b : lilyPad(p, i, u);

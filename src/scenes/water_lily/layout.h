@@ -83,8 +83,11 @@ inline const LeafPlacement SUBMERGED[SUBMERGED_COUNT] = {
 };
 constexpr float SUBMERGED_DEPTH = 0.12f;
 
-// ---- the slab that holds every marched surface: rays are marched only inside it ----
+// ---- the box that holds every marched surface: rays are marched only inside it ----
 constexpr float SLAB_BOTTOM = -0.01f;
 constexpr float SLAB_TOP = 0.62f;  // above the tallest flower's petals at MAX_CURL
+// Its extent on the water: every pad (the drifting one at any drift) and flower inside.
+inline const glm::vec3 FIELD_MIN(-4.6f, SLAB_BOTTOM, -0.8f);
+inline const glm::vec3 FIELD_MAX(4.3f, SLAB_TOP, 10.0f);
 
 }  // namespace sdfreel::water_lily

@@ -30,17 +30,32 @@ constexpr float SHADOW_MIN_DENOM = 1e-6f;
 constexpr float SHADOW_MIN_STEP = 1e-4f;  // a bound near 0 beside a petal must not stall the ray
 constexpr float FILL_SHADOW_SOFTNESS = 0.35f;  // the sky fill is a wide light: a softer penumbra
 constexpr float REFLECT_MAX_DIST = 14.0f;      // reflections of lilies farther away fade out anyway
+// Reflections are seen through the bumped water, blurred: a coarser hit threshold lets a
+// reflected ray that creeps over a pad's rim stop (hard case horizon_grazing: out of steps).
+constexpr float REFLECT_HIT_SCALE = 4.0f;
 
-// Where a ray is inside the slab SLAB_BOTTOM < y < SLAB_TOP, from t = 0: (enter, exit), empty
-// (enter > exit) when it never is. A horizontal ray is inside or outside as a whole.
-vec2 slabSpan(const vec3& ro, const vec3& rd) {
-  if (rd.y == 0.0f) {
-    const bool inside = ro.y > SLAB_BOTTOM && ro.y < SLAB_TOP;
-    return inside ? vec2(0.0f, BIG_DISTANCE) : vec2(1.0f, 0.0f);
+// Where the ray is inside lo < x < hi along one axis: (enter, exit) from -inf to inf; a ray
+// parallel to the slab is inside or outside as a whole.
+vec2 axisSpan(float o, float d, float lo, float hi) {
+  if (d == 0.0f) {
+    const bool inside = o > lo && o < hi;
+    return inside ? vec2(-BIG_DISTANCE, BIG_DISTANCE) : vec2(BIG_DISTANCE, -BIG_DISTANCE);
   }
-  const float ta = (SLAB_BOTTOM - ro.y) / rd.y;
-  const float tb = (SLAB_TOP - ro.y) / rd.y;
-  return vec2(dm::max(dm::min(ta, tb), 0.0f), dm::max(ta, tb));
+  const float ta = (lo - o) / d;
+  const float tb = (hi - o) / d;
+  return vec2(dm::min(ta, tb), dm::max(ta, tb));
+}
+
+// Where a ray is inside the field box (FIELD_MIN, FIELD_MAX) from t = 0: (enter, exit), empty
+// (enter >= exit) when it never is. Rays far over the pond leave it early (hard case
+// horizon_grazing: a level ray would otherwise creep over the water to max_dist).
+vec2 slabSpan(const vec3& ro, const vec3& rd) {
+  const vec2 sx = axisSpan(ro.x, rd.x, FIELD_MIN.x, FIELD_MAX.x);
+  const vec2 sy = axisSpan(ro.y, rd.y, FIELD_MIN.y, FIELD_MAX.y);
+  const vec2 sz = axisSpan(ro.z, rd.z, FIELD_MIN.z, FIELD_MAX.z);
+  const float enter = dm::max(dm::max(sx.x, sy.x), dm::max(sz.x, 0.0f));
+  const float exit = dm::min(dm::min(sx.y, sy.y), sz.y);
+  return vec2(enter, exit);
 }
 
 // Distance to the water plane along the ray, or NO_HIT (also for an eye under the water).
@@ -64,14 +79,14 @@ float surfaceBias(float eps) {
 // threshold grows with the path length eps_per_t * (t_before + t); a ray out of steps counts as
 // a hit where it stopped (stats.capped). Returns t or NO_HIT.
 float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_steps, float eps_per_t,
-            float t_before, const LilyUniforms& u, RayStats& stats) {
+            float t_before, bool leaves, const LilyUniforms& u, RayStats& stats) {
   float t = tmin;
   float omega = u.naive ? 1.0f : u.step_factor;
   float prev_d = 0.0f;
   float step = 0.0f;
   for (int i = 0; i < max_steps; ++i) {
     stats.steps += 1;
-    const float d = mapScene(ro + rd * t, u, stats);
+    const float d = mapScene(ro + rd * t, leaves, u, stats);
     if (omega > 1.0f && dm::abs(d) + prev_d < step) {
       t += prev_d - step;
       step = prev_d;
@@ -95,11 +110,12 @@ float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_step
   return t;
 }
 
-vec3 calcNormal(const vec3& p, float e, const LilyUniforms& u, RayStats& stats) {
+vec3 calcNormal(const vec3& p, float e, bool leaves, const LilyUniforms& u, RayStats& stats) {
   const vec3 a(1.0f, -1.0f, -1.0f), b(-1.0f, -1.0f, 1.0f), c(-1.0f, 1.0f, -1.0f),
       d(1.0f, 1.0f, 1.0f);
-  return safe_normalize(a * mapScene(p + a * e, u, stats) + b * mapScene(p + b * e, u, stats) +
-                        c * mapScene(p + c * e, u, stats) + d * mapScene(p + d * e, u, stats));
+  return safe_normalize(
+      a * mapScene(p + a * e, leaves, u, stats) + b * mapScene(p + b * e, leaves, u, stats) +
+      c * mapScene(p + c * e, leaves, u, stats) + d * mapScene(p + d * e, leaves, u, stats));
 }
 
 vec3 reflectDir(const vec3& d, const vec3& n) {
@@ -146,8 +162,8 @@ struct Surface {
   float shininess;    // 0: no highlight
 };
 
-Surface surfaceAt(const vec3& p, const LilyUniforms& u) {
-  const Nearest n = mapNearest(p, u, BOUND_MARGIN);
+Surface surfaceAt(const vec3& p, bool leaves, const LilyUniforms& u) {
+  const Nearest n = mapNearest(p, u, BOUND_MARGIN, leaves);
   if (n.flower >= 0) {
     const vec3 q = toFlower(p, n.flower);
     const float center = flowerCenter(q);
@@ -199,7 +215,7 @@ vec3 lightSurface(const Surface& s, const vec3& n, const vec3& rd, float sun_sha
 // A marched surface seen along rd at distance t, fully lit (soft shadows from both lights).
 vec3 shadeSurface(const vec3& p, const vec3& n, const vec3& rd, float bias, const LilyUniforms& u,
                   RayStats& stats) {
-  const Surface s = surfaceAt(p, u);
+  const Surface s = surfaceAt(p, true, u);
   const vec3 o = p + n * bias;
   // A surface turned away from a light gets no direct light from it: no shadow ray either
   // (translucent petals need the sun's shadow from both sides).
@@ -247,19 +263,22 @@ float submergedLeaf(const vec3& w, const vec3& rd, vec3& col) {
   return cover;
 }
 
-// What the water mirrors along r from w: the lilies and pads (lit, unshadowed), fading with the
-// distance they are seen at, over the sky.
+// What the water mirrors along r from w: the lilies (lit, unshadowed), fading with the distance
+// they are seen at, over the sky. As in the seed, only the lilies are tested: the pads lie flat
+// on the water, where their reflection would coincide with them, and a reflected ray creeping
+// over a pad's rim would cost its whole step budget (hard case horizon_grazing).
 vec3 traceReflection(const vec3& w, const vec3& r, float t_before, float eps_per_t,
                      float pixel_angle, const LilyUniforms& u, RayStats& stats) {
   const vec3 sky = skyColor(r, u);
   const vec2 span = slabSpan(w, r);
   const float t1 = dm::min(span.y, u.naive ? u.max_dist : REFLECT_MAX_DIST);
   if (!(span.x < t1)) return sky;
-  const float t = march(w, r, span.x, t1, u.reflect_steps, eps_per_t, t_before, u, stats);
+  const float t = march(w, r, span.x, t1, u.reflect_steps, eps_per_t * REFLECT_HIT_SCALE, t_before,
+                        false, u, stats);
   if (t == NO_HIT) return sky;
   const vec3 q = w + r * t;
-  const vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), u, stats);
-  const vec3 col = lightSurface(surfaceAt(q, u), nq, r, 1.0f, 1.0f, u);
+  const vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), false, u, stats);
+  const vec3 col = lightSurface(surfaceAt(q, false, u), nq, r, 1.0f, 1.0f, u);
   return dm::mix(sky, col, dm::exp(-REFLECT_FALLOFF * t));
 }
 
@@ -299,9 +318,9 @@ vec3 underwater(const vec3& rd) {
 
 }  // namespace
 
-float mapScene(const vec3& p, const LilyUniforms& u, RayStats& stats) {
+float mapScene(const vec3& p, bool leaves, const LilyUniforms& u, RayStats& stats) {
   stats.sdf_evals += 1;
-  return mapNearest(p, u, BOUND_MARGIN).d;
+  return mapNearest(p, u, BOUND_MARGIN, leaves).d;
 }
 
 vec3 skyColor(const vec3& d, const LilyUniforms& u) {
@@ -338,6 +357,7 @@ float softShadow(const vec3& ro, const vec3& ld, float k, int steps, const LilyU
   float t = dm::max(SHADOW_TMIN, u.naive ? 0.0f : span.x);
   float res = 1.0f;
   float ph = SHADOW_FIRST_PH;
+  float step = 0.0f;
   for (int i = 0; i < steps && t < tmax; ++i) {
     stats.steps += 1;
     stats.sdf_evals += 1;
@@ -349,14 +369,22 @@ float softShadow(const vec3& ro, const vec3& ld, float k, int steps, const LilyU
     const float h = n.est;
     if (h < SHADOW_HIT_EPS) return 0.0f;
     if (n.exact) {
-      const float y = h * h / (2.0f * ph);
+      // Quilez's improved estimate: the closest approach lies where the spheres of radius ph
+      // (one step back) and h meet, y before this point. His h^2 / (2 ph) assumes the step was
+      // ph; here steps are bounds shorter than the estimates, so the chord is placed for the
+      // real step, and spheres that do not cut each other (one inside the other: the estimate
+      // is not Lipschitz) or cut ahead of this point (y < 0) give no better estimate than h.
+      float y = 0.0f;
+      if (dm::abs(h - ph) < step)
+        y = dm::max((h * h - ph * ph + step * step) / (2.0f * step), 0.0f);
       const float d = dm::sqrt(dm::max(h * h - y * y, 0.0f));
       res = dm::min(res, k * d / dm::max(t - y, SHADOW_MIN_DENOM));
       ph = h;
     } else {
       ph = SHADOW_FIRST_PH;
     }
-    t += dm::max(n.d, SHADOW_MIN_STEP);
+    step = dm::max(n.d, SHADOW_MIN_STEP);
+    t += step;
   }
   res = dm::clamp(res, 0.0f, 1.0f);
   return res * res * (3.0f - 2.0f * res);
@@ -385,7 +413,7 @@ vec3 sceneRadiance(const Ray& ray, const LilyUniforms& u, RayStats& stats) {
   const vec2 span = u.naive ? vec2(0.0f, u.max_dist) : slabSpan(ro, rd);
   const float t1 = dm::min(span.y, water ? t_water : u.max_dist);
   float t = NO_HIT;
-  if (span.x < t1) t = march(ro, rd, span.x, t1, u.max_steps, eps_per_t, 0.0f, u, stats);
+  if (span.x < t1) t = march(ro, rd, span.x, t1, u.max_steps, eps_per_t, 0.0f, true, u, stats);
   if (u.hit_mask) {
     if (t == NO_HIT) return vec3(HIT_ID_NONE);
     return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER : HIT_ID_LEAF);
@@ -394,7 +422,7 @@ vec3 sceneRadiance(const Ray& ray, const LilyUniforms& u, RayStats& stats) {
   float dist;
   if (t != NO_HIT) {
     const vec3 p = ro + rd * t;
-    const vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), u, stats);
+    const vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), true, u, stats);
     col = shadeSurface(p, n, rd, surfaceBias(hitEps(eps_per_t, t, u)), u, stats);
     dist = t;
   } else if (water) {

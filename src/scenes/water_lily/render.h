@@ -10,8 +10,8 @@
 
 namespace sdfreel::water_lily {
 
-// The marched scene at p: flowers and pads, bounds standing in for far parts.
-float mapScene(const glm::vec3& p, const LilyUniforms& u, RayStats& stats);
+// The marched scene at p: flowers and (if `leaves`) pads, bounds standing in for far parts.
+float mapScene(const glm::vec3& p, bool leaves, const LilyUniforms& u, RayStats& stats);
 
 // Sky radiance in direction d (unit): horizon to zenith gradient, FBM cloud glow, sun glow.
 glm::vec3 skyColor(const glm::vec3& d, const LilyUniforms& u);
