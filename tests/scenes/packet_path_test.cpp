@@ -127,7 +127,7 @@ TEST_P(PacketPath, IndependentOfThreadsAndTileSize) {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (const char* s : {"sdf_morph", "lantern_festival"}) {
+  for (const char* s : {"sdf_morph", "lantern_festival", "water_lily"}) {
     out.push_back({s, Quality::Draft, 1});
     out.push_back({s, Quality::Final, 3});
     out.push_back({s, Quality::Final, 1, true});         // naive

@@ -3,10 +3,13 @@
 // cylinder with a notch, after seed 001. The water plane y = 0 is not marched (render.cpp).
 // Mirrored line for line in shaders/water_lily/geometry.glsl.
 #include <glm/glm.hpp>
+#include <utility>
 
+#include "scenes/water_lily/lanes_math.h"
 #include "scenes/water_lily/layout.h"
 #include "scenes/water_lily/uniforms.h"
 #include "sdf/det_math.h"
+#include "sdf/lanes.h"
 #include "sdf/sdf.h"
 
 namespace sdfreel::water_lily {
@@ -17,12 +20,26 @@ constexpr float NAIVE_PETAL_FACTOR = 0.1f;
 constexpr float BIG_DISTANCE = 1e10f;
 constexpr float MIN_ELLIPSOID_GRADIENT = 1e-6f;
 
+// The geometry is one source for the scalar path (glm::vec3, float) and the eight-lane path
+// (V3x8, F8: lanes.cpp), as sdf/sdf.h: branches on the point are selects of both sides, so each
+// lane performs the scalar operations in the scalar order and gets the scalar bits.
+template <class V>
+using DistanceOf = decltype(vlength(std::declval<V>()));
+
+// A bound and a penumbra estimate, for one point or eight.
+template <class F>
+struct Dist2 {
+  F x;  // the bound sphere tracing steps with
+  F y;  // the penumbra estimate of the soft shadows
+};
+
 // The seed's flattened sphere: the sphere of radius r.x fed the point scaled by r.x / r, an
 // ellipsoid with half axes r. Its Lipschitz constant is the largest scale, r.x / r.y (12 for the
 // outer petals): the 0.1 of the Shadertoy the seed cites is not even a bound once the polar fold
 // and the curl stretch it further (tests/scenes/water_lily/bounds_test.cpp). The naive preset
 // keeps it with that blanket factor.
-inline float sdFlattenedSphere(const glm::vec3& p, const glm::vec3& r) {
+template <class V>
+inline auto sdFlattenedSphere(const V& p, const glm::vec3& r) {
   return sdSphere(p * (r.x / r), r.x);
 }
 
@@ -30,9 +47,10 @@ inline float sdFlattenedSphere(const glm::vec3& p, const glm::vec3& r) {
 // the length of its gradient. f is convex, so f / |grad f| never exceeds the distance to the
 // ellipsoid from outside: a lower bound, tight near the surface from every side (not Lipschitz
 // far away, which sphere tracing does not need).
-inline float ellipsoidBound(const glm::vec3& p, const glm::vec3& r) {
-  const float k0 = glm::length(p / r);
-  const float k1 = glm::length(p / (r * r));
+template <class V>
+inline auto ellipsoidBound(const V& p, const glm::vec3& r) {
+  const auto k0 = vlength(p / r);
+  const auto k1 = vlength(p / (r * r));
   return k0 * (k0 - 1.0f) / dm::max(k1, MIN_ELLIPSOID_GRADIENT);
 }
 
@@ -67,19 +85,20 @@ inline float leafLipschitz(const LeafPlacement& leaf) {
 
 // One petal of a layer, at polar radius rho and angle a off its axis, height y above the layer's
 // plane (flower units). Pointed: r = rho (1 + k |a|); curled: the (x, y) plane turned back by
-// curl * min(s, extent); flattened and fed to the sphere. Returns the raw value (not yet / L)
-// and the penumbra estimate.
-inline glm::vec2 petal(float rho, float a, float y, const PetalLayer& layer, float c) {
-  const float r = rho * (1.0f + PETAL_POINT * dm::abs(a));
-  const float x = r * dm::cos(a);
-  const float z = r * dm::sin(a);
-  const float s = dm::sqrt(x * x + y * y);
-  const float phi = c * dm::min(s, layer.reach + layer.radii.x);
-  const float cs = dm::cos(phi), sn = dm::sin(phi);
-  const float xc = cs * x + sn * y;
-  const float yc = cs * y - sn * x;
-  const glm::vec3 e(xc - layer.reach, yc, z);
-  return glm::vec2(sdFlattenedSphere(e, layer.radii), ellipsoidBound(e, layer.radii));
+// c * min(s, extent); flattened and fed to the sphere. Returns the seed's sphere value (not yet
+// scaled) and the ellipsoid bound.
+template <class F>
+inline Dist2<F> petal(F rho, F a, F y, const PetalLayer& layer, float c) {
+  const F r = rho * (1.0f + PETAL_POINT * dm::abs(a));
+  const F x = r * dm::cos(a);
+  const F z = r * dm::sin(a);
+  const F s = dm::sqrt(x * x + y * y);
+  const F phi = c * dm::min(s, layer.reach + layer.radii.x);
+  const F cs = dm::cos(phi), sn = dm::sin(phi);
+  const F xc = cs * x + sn * y;
+  const F yc = cs * y - sn * x;
+  const auto e = vec3_of(xc - layer.reach, yc, z);
+  return {sdFlattenedSphere(e, layer.radii), ellipsoidBound(e, layer.radii)};
 }
 
 // One layer of PETALS_PER_LAYER petals around the flower axis: the point's angle folded into one
@@ -87,47 +106,55 @@ inline glm::vec2 petal(float rho, float a, float y, const PetalLayer& layer, flo
 // border). q in flower units, relative to the flower's centre on the water. Returns the bound
 // (ellipsoid bound / the reshaping's Lipschitz bound; naive: the seed's sphere * 0.1) and the
 // penumbra estimate (the ellipsoid bound itself: near the true distance close to a petal).
-inline glm::vec2 petalLayer(const glm::vec3& q, int l, float turn, float c, const LilyUniforms& u) {
+template <class V>
+inline Dist2<DistanceOf<V>> petalLayer(const V& q, int l, float turn, float c,
+                                       const LilyUniforms& u) {
+  using F = DistanceOf<V>;
   const PetalLayer& layer = LAYERS[l];
-  const float rho = dm::sqrt(q.x * q.x + q.z * q.z);
-  const float angle = dm::atan2(q.z, q.x) - (turn + layer.turn);
-  const float a = dm::mod(angle, PETAL_DIV) - 0.5f * PETAL_DIV;
-  const float a2 = a >= 0.0f ? a - PETAL_DIV : a + PETAL_DIV;
-  const float y = q.y - layer.base_y;
+  const F rho = dm::sqrt(q.x * q.x + q.z * q.z);
+  const F angle = dm::atan2(q.z, q.x) - (turn + layer.turn);
+  const F a = dm::mod(angle, PETAL_DIV) - 0.5f * PETAL_DIV;
+  const F a2 = select(a >= 0.0f, a - PETAL_DIV, a + PETAL_DIV);
+  const F y = q.y - layer.base_y;
   const float cl = c * layer.curl;
-  const glm::vec2 p1 = petal(rho, a, y, layer, cl);
-  const glm::vec2 p2 = petal(rho, a2, y, layer, cl);
-  const float e = dm::min(p1.y, p2.y);
-  const float bound = u.naive ? dm::min(p1.x, p2.x) * NAIVE_PETAL_FACTOR : e / u.petal_lipschitz[l];
-  return glm::vec2(bound, e);
+  const Dist2<F> p1 = petal(rho, a, y, layer, cl);
+  const Dist2<F> p2 = petal(rho, a2, y, layer, cl);
+  const F e = dm::min(p1.y, p2.y);
+  const F bound = u.naive ? dm::min(p1.x, p2.x) * NAIVE_PETAL_FACTOR : e / u.petal_lipschitz[l];
+  return {bound, e};
 }
 
 // The flower's coloured centre: a sphere of stamens.
-inline float flowerCenter(const glm::vec3& q) {
+template <class V>
+inline auto flowerCenter(const V& q) {
   return sdSphere(q - glm::vec3(0.0f, CENTER_Y, 0.0f), CENTER_RADIUS);
 }
 
-inline glm::vec3 toFlower(const glm::vec3& p, int f) {
+template <class V>
+inline V toFlower(const V& p, int f) {
   const FlowerPlacement& fl = FLOWERS[f];
   return (p - glm::vec3(fl.xz.x, 0.0f, fl.xz.y)) / fl.scale;
 }
 
 // A water lily: the layers blended where they meet, the centre blended into the inner petals.
 // Returns the bound and the penumbra estimate (world units).
-inline glm::vec2 lilyFlowerPair(const glm::vec3& p, int f, const LilyUniforms& u) {
+template <class V>
+inline Dist2<DistanceOf<V>> lilyFlowerPair(const V& p, int f, const LilyUniforms& u) {
+  using F = DistanceOf<V>;
   const FlowerPlacement& fl = FLOWERS[f];
-  const glm::vec3 q = toFlower(p, f);
-  glm::vec2 d = petalLayer(q, 0, fl.turn, u.curl[f], u);
+  const V q = toFlower(p, f);
+  Dist2<F> d = petalLayer(q, 0, fl.turn, u.curl[f], u);
   for (int l = 1; l < PETAL_LAYERS; ++l) {
-    const glm::vec2 e = petalLayer(q, l, fl.turn, u.curl[f], u);
-    d = glm::vec2(opSmoothUnion(d.x, e.x, LAYER_BLEND), opSmoothUnion(d.y, e.y, LAYER_BLEND));
+    const Dist2<F> e = petalLayer(q, l, fl.turn, u.curl[f], u);
+    d = {opSmoothUnion(d.x, e.x, LAYER_BLEND), opSmoothUnion(d.y, e.y, LAYER_BLEND)};
   }
-  const float c = flowerCenter(q);
-  d = glm::vec2(opSmoothUnion(d.x, c, CENTER_BLEND), opSmoothUnion(d.y, c, CENTER_BLEND));
-  return d * fl.scale;
+  const F c = flowerCenter(q);
+  d = {opSmoothUnion(d.x, c, CENTER_BLEND), opSmoothUnion(d.y, c, CENTER_BLEND)};
+  return {d.x * fl.scale, d.y * fl.scale};
 }
 
-inline float lilyFlower(const glm::vec3& p, int f, const LilyUniforms& u) {
+template <class V>
+inline DistanceOf<V> lilyFlower(const V& p, int f, const LilyUniforms& u) {
   return lilyFlowerPair(p, f, u).x;
 }
 
@@ -136,48 +163,55 @@ inline glm::vec2 leafCenter(int i, const LilyUniforms& u) {
 }
 
 // Pad-local frame: centred, rim lift removed (curled leaves), turned so the notch opens along +x.
-inline glm::vec3 toLeaf(const glm::vec3& p, int i, const LilyUniforms& u) {
+template <class V>
+inline V toLeaf(const V& p, int i, const LilyUniforms& u) {
+  using F = DistanceOf<V>;
   const LeafPlacement& leaf = LEAVES[i];
   const glm::vec2 c = leafCenter(i, u);
-  const glm::vec3 q = p - glm::vec3(c.x, LEAF_Y, c.y);
-  const float rho = dm::sqrt(q.x * q.x + q.z * q.z);
-  const float e = dm::min(rho, leaf.radius * LEAF_CURL_REACH) / leaf.radius;
-  const float lift = leaf.curl * e * e;
+  const V q = p - glm::vec3(c.x, LEAF_Y, c.y);
+  const F rho = dm::sqrt(q.x * q.x + q.z * q.z);
+  const F e = dm::min(rho, leaf.radius * LEAF_CURL_REACH) / leaf.radius;
+  const F lift = leaf.curl * e * e;
   const float cs = dm::cos(leaf.notch_angle), sn = dm::sin(leaf.notch_angle);
-  return glm::vec3(cs * q.x + sn * q.z, q.y - lift, cs * q.z - sn * q.x);
+  return vec3_of(cs * q.x + sn * q.z, q.y - lift, cs * q.z - sn * q.x);
 }
 
 // The notch: two boxes, each displaced so that one face runs through the pad's centre at
 // +-NOTCH_HALF_ANGLE; their intersection is the V cut out of the pad.
-inline float leafNotch(const glm::vec3& q, float radius) {
+template <class V>
+inline DistanceOf<V> leafNotch(const V& q, float radius) {
   const float ca = dm::cos(NOTCH_HALF_ANGLE), sa = dm::sin(NOTCH_HALF_ANGLE);
   const glm::vec3 half(1.2f * radius, 0.2f, radius);
-  const glm::vec3 qa(ca * q.x + sa * q.z - radius, q.y, ca * q.z - sa * q.x + radius);
-  const glm::vec3 qb(ca * q.x - sa * q.z - radius, q.y, ca * q.z + sa * q.x - radius);
+  const V qa = vec3_of(ca * q.x + sa * q.z - radius, q.y, ca * q.z - sa * q.x + radius);
+  const V qb = vec3_of(ca * q.x - sa * q.z - radius, q.y, ca * q.z + sa * q.x - radius);
   return opIntersection(sdBox(qa, half), sdBox(qb, half));
 }
 
 // A lily pad: a flattened cylinder minus the notch.
-inline float lilyPad(const glm::vec3& p, int i, const LilyUniforms& u) {
-  const glm::vec3 q = toLeaf(p, i, u);
-  const float pad = sdCappedCylinder(q, LEAF_HALF_H, LEAVES[i].radius);
-  const float d = opSubtraction(leafNotch(q, LEAVES[i].radius), pad);
+template <class V>
+inline DistanceOf<V> lilyPad(const V& p, int i, const LilyUniforms& u) {
+  const V q = toLeaf(p, i, u);
+  const auto pad = sdCappedCylinder(q, LEAF_HALF_H, LEAVES[i].radius);
+  const auto d = opSubtraction(leafNotch(q, LEAVES[i].radius), pad);
   return u.naive ? d : d / u.leaf_lipschitz[i];
 }
 
 // ---- bounds: cheap lower bounds that stand in for far parts ----
 
-inline float flowerBound(const glm::vec3& p, int f) {
+template <class V>
+inline DistanceOf<V> flowerBound(const V& p, int f) {
   const FlowerPlacement& fl = FLOWERS[f];
   const glm::vec3 c(fl.xz.x, FLOWER_BOUND_Y * fl.scale, fl.xz.y);
-  return glm::length(p - c) - FLOWER_BOUND_RADIUS * fl.scale;
+  return vlength(p - c) - FLOWER_BOUND_RADIUS * fl.scale;
 }
 
-inline float leafBound(const glm::vec3& p, int i, const LilyUniforms& u) {
+template <class V>
+inline DistanceOf<V> leafBound(const V& p, int i, const LilyUniforms& u) {
+  using F = DistanceOf<V>;
   const glm::vec2 c = leafCenter(i, u);
-  const float dx = p.x - c.x, dz = p.z - c.y;
-  const float side = dm::sqrt(dx * dx + dz * dz) - LEAVES[i].radius;
-  const float vertical = dm::abs(p.y - LEAF_Y) - (LEAF_HALF_H + LEAVES[i].curl);
+  const F dx = p.x - c.x, dz = p.z - c.y;
+  const F side = dm::sqrt(dx * dx + dz * dz) - LEAVES[i].radius;
+  const F vertical = dm::abs(p.y - LEAF_Y) - (LEAF_HALF_H + LEAVES[i].curl);
   return dm::max(side, vertical);
 }
 
@@ -209,7 +243,7 @@ inline Nearest mapNearest(const glm::vec3& p, const LilyUniforms& u, float margi
   for (int f = 0; f < FLOWER_COUNT; ++f) {
     const float b = u.naive ? -1.0f : flowerBound(p, f);
     const bool far = b > margin;
-    const glm::vec2 d = far ? glm::vec2(b) : lilyFlowerPair(p, f, u);
+    const Dist2<float> d = far ? Dist2<float>{b, b} : lilyFlowerPair(p, f, u);
     if (d.x < n.d) {
       n.d = d.x;
       n.est = d.y;

@@ -13,12 +13,9 @@ using glm::vec2;
 using glm::vec3;
 
 // ---- marching ----
-constexpr float MIN_HIT_EPS = 1e-5f;
 constexpr float MIN_NORMAL_EPS = 1e-4f;
 constexpr float MIN_SURFACE_BIAS = 2e-3f;
 constexpr float SURFACE_BIAS_FACTOR = 2.0f;
-constexpr float NO_HIT = -1.0f;
-constexpr float BOUND_MARGIN = 0.05f;  // parts farther than this contribute their bound
 constexpr float HIT_ID_NONE = 0.0f;
 constexpr float HIT_ID_FLOWER = 1.0f;
 constexpr float HIT_ID_LEAF = 2.0f;
@@ -405,15 +402,31 @@ vec3 grade(const vec3& c, const vec3& rd, const LilyUniforms& u) {
   return col * (1.0f / (1.0f + u.vignette * r2 * r2));
 }
 
+PrimarySpan primarySpan(const Ray& ray, const LilyUniforms& u) {
+  PrimarySpan s;
+  s.eps_per_t = u.hit_eps * ray.pixel_angle;
+  s.t_water = intersectWater(ray.origin, ray.dir);
+  s.water = s.t_water != NO_HIT && s.t_water < u.max_dist;
+  const vec2 span = u.naive ? vec2(0.0f, u.max_dist) : slabSpan(ray.origin, ray.dir);
+  s.t0 = span.x;
+  s.t1 = dm::min(span.y, s.water ? s.t_water : u.max_dist);
+  return s;
+}
+
 vec3 sceneRadiance(const Ray& ray, const LilyUniforms& u, RayStats& stats) {
-  const vec3 ro = ray.origin, rd = ray.dir;
-  const float eps_per_t = u.hit_eps * ray.pixel_angle;
-  const float t_water = intersectWater(ro, rd);
-  const bool water = t_water != NO_HIT && t_water < u.max_dist;
-  const vec2 span = u.naive ? vec2(0.0f, u.max_dist) : slabSpan(ro, rd);
-  const float t1 = dm::min(span.y, water ? t_water : u.max_dist);
+  const PrimarySpan s = primarySpan(ray, u);
   float t = NO_HIT;
-  if (span.x < t1) t = march(ro, rd, span.x, t1, u.max_steps, eps_per_t, 0.0f, true, u, stats);
+  if (s.t0 < s.t1)
+    t = march(ray.origin, ray.dir, s.t0, s.t1, u.max_steps, s.eps_per_t, 0.0f, true, u, stats);
+  return radianceAfterMarch(ray, s, t, u, stats);
+}
+
+vec3 radianceAfterMarch(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
+                        RayStats& stats) {
+  const vec3 ro = ray.origin, rd = ray.dir;
+  const float eps_per_t = s.eps_per_t;
+  const float t_water = s.t_water;
+  const bool water = s.water;
   if (u.hit_mask) {
     if (t == NO_HIT) return vec3(HIT_ID_NONE);
     return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER : HIT_ID_LEAF);

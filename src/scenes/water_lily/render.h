@@ -10,6 +10,10 @@
 
 namespace sdfreel::water_lily {
 
+constexpr float MIN_HIT_EPS = 1e-5f;
+constexpr float NO_HIT = -1.0f;
+constexpr float BOUND_MARGIN = 0.05f;  // parts farther than this contribute their bound
+
 // The marched scene at p: flowers and (if `leaves`) pads, bounds standing in for far parts.
 float mapScene(const glm::vec3& p, bool leaves, const LilyUniforms& u, RayStats& stats);
 
@@ -28,5 +32,18 @@ glm::vec3 grade(const glm::vec3& col, const glm::vec3& rd, const LilyUniforms& u
 
 // Linear radiance along a primary ray.
 glm::vec3 sceneRadiance(const Ray& ray, const LilyUniforms& u, RayStats& stats);
+
+// sceneRadiance in two phases, for the eight-lane path (lanes.cpp), which marches the primary
+// rays of a packet together: where the primary ray is marched (inside the field box, before the
+// water) and, once the march gave t (or NO_HIT), everything else.
+struct PrimarySpan {
+  float eps_per_t;  // hit threshold per unit of path length
+  float t_water;    // NO_HIT or where the ray meets the water
+  bool water;       // the water is hit within max_dist
+  float t0, t1;     // marched span; empty when t0 >= t1
+};
+PrimarySpan primarySpan(const Ray& ray, const LilyUniforms& u);
+glm::vec3 radianceAfterMarch(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
+                             RayStats& stats);
 
 }  // namespace sdfreel::water_lily

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "scenes/scene.h"
+#include "scenes/water_lily/lanes.h"
 #include "scenes/water_lily/render.h"
 #include "scenes/water_lily/uniforms.h"
 
@@ -36,6 +37,12 @@ class WaterLilyScene : public Scene {
   void prepare(const FrameContext& ctx) override { u_ = water_lily::make_lily_uniforms(ctx); }
   glm::vec3 radiance(const Ray& ray, RayStats& stats) const override {
     return water_lily::sceneRadiance(ray, u_, stats);
+  }
+  void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override {
+    water_lily::radiancePacket(rays, u_, out, stats);
+  }
+  std::vector<DistanceFunction> distance_functions() const override {
+    return water_lily::lilyDistanceFunctions(u_);
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return water_lily::lily_shader_uniforms(u_);
