@@ -3,11 +3,13 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libopenimageio-dev libopenexr-dev libopencolorio-dev opencolorio-tools libglm-dev
+  libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev opencolorio-tools libglm-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libosmesa6-dev libtomlplusplus-dev libcli11-dev libfmt-dev libtbb-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   ffmpeg   # tests only: stock ffmpeg/ffprobe check our framemd5 and stream tags
+  file dpkg-dev   # cpack -G DEB: dpkg-shlibdeps derives the package's library dependencies
+  clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer, ASan, UBSan), scripts/build-matrix.sh
 )
 missing=()
 for p in "${packages[@]}"; do

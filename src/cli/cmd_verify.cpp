@@ -6,7 +6,7 @@
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
 #include "io/frame_files.h"
-#include "io/manifest.h"
+#include "io/hash_reference.h"
 
 namespace sdfreel {
 
@@ -27,28 +27,49 @@ ImageRGB16 diff_image(const ImageRGB16& a, const ImageRGB16& b) {
   return d;
 }
 
+// A framemd5 holds no settings; its frame size at least tells another resolution or pixel format.
+bool same_frame_size(const HashReference& ref, const Timeline& tl, const std::string& path) {
+  const int64_t bytes = 6LL * tl.width * tl.height;
+  for (const auto& [i, want] : ref.frames) {
+    if (want.size < 0 || want.size == bytes) continue;
+    std::fprintf(
+        stderr,
+        "sdfreel: verify failed: %s lists frame %d with %lld bytes, this timeline's frames "
+        "have %lld (rgb48le, %dx%d): made at another resolution or pixel format\n",
+        path.c_str(), i, (long long)want.size, (long long)bytes, tl.width, tl.height);
+    return false;
+  }
+  return true;
+}
+
 int run_verify(const VerifyOptions& o) {
-  const auto manifest = read_manifest(o.manifest);
-  if (!manifest) throw UsageError("cannot read manifest " + o.manifest);
+  HashReference ref;
+  try {
+    ref = read_hash_reference(o.manifest);
+  } catch (const HashReferenceError& e) {
+    throw UsageError(e.what());
+  }
   Timeline tl = load_with_overrides(o.render);
   FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
-  if (!header.same_render_as(manifest->header)) {
+  if (ref.header && !header.same_render_as(*ref.header)) {
     std::fprintf(stderr,
                  "sdfreel: verify failed: %s was made with other settings (timeline, backend, "
                  "library versions, resolution, samples, quality or colour)\n",
                  o.manifest.c_str());
     return 1;
   }
+  if (!same_frame_size(ref, tl, o.manifest)) return 1;
   const std::string dir = std::filesystem::path(o.manifest).parent_path().string();
   const std::string out_dir = o.render.out.empty() ? (dir.empty() ? "." : dir) : o.render.out;
   int checked = 0;
   for (int i : selected_frames(tl, o.render)) {
-    auto it = manifest->frames.find(i);
-    if (it == manifest->frames.end()) continue;
+    auto it = ref.frames.find(i);
+    if (it == ref.frames.end()) continue;
     RenderedFrame f = pipe.render(i);
-    const ManifestFrame& want = it->second;
-    if (f.linear_hash == want.linear_hash && f.display_md5 == want.display_md5) {
+    const ReferenceFrame& want = it->second;
+    const bool linear_ok = want.linear_hash.empty() || f.linear_hash == want.linear_hash;
+    if (linear_ok && f.display_md5 == want.display_md5) {
       ++checked;
       std::fprintf(stderr, "frame %05d ok\n", i);
       continue;
@@ -66,15 +87,16 @@ int run_verify(const VerifyOptions& o) {
       write_png16_atomic(written, f.display);
     }
     std::fprintf(stderr,
-                 "sdfreel: verify failed: frame %d differs (display md5 %s, manifest %s; linear "
-                 "%s, manifest %s); wrote %s\n",
-                 i, f.display_md5.c_str(), want.display_md5.c_str(), f.linear_hash.c_str(),
-                 want.linear_hash.c_str(), written.c_str());
+                 "sdfreel: verify failed: frame %d differs (display md5 %s, %s %s; linear %s, "
+                 "%s %s); wrote %s\n",
+                 i, f.display_md5.c_str(), ref.kind.c_str(), want.display_md5.c_str(),
+                 f.linear_hash.c_str(), ref.kind.c_str(),
+                 want.linear_hash.empty() ? "-" : want.linear_hash.c_str(), written.c_str());
     return 1;
   }
   if (checked == 0) {
-    std::fprintf(stderr,
-                 "sdfreel: verify failed: the manifest lists none of the selected frames\n");
+    std::fprintf(stderr, "sdfreel: verify failed: %s lists none of the selected frames\n",
+                 o.manifest.c_str());
     return 1;
   }
   std::fprintf(stderr, "verified %d frames: all hashes match\n", checked);
@@ -87,7 +109,10 @@ void add_verify_command(CLI::App& app, int& status) {
   auto o = std::make_shared<VerifyOptions>();
   CLI::App* cmd = app.add_subcommand("verify", "re-render and compare every frame with a manifest");
   add_render_options(cmd, o->render);
-  cmd->add_option("--manifest", o->manifest, "manifest.json of an earlier render")->required();
+  cmd->add_option(
+         "--manifest", o->manifest,
+         "manifest.json or framemd5 (sdfreel's or ffmpeg -f framemd5) of an earlier render")
+      ->required();
   cmd->callback([o, &status] { status = run_verify(*o); });
 }
 

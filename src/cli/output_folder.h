@@ -1,9 +1,9 @@
 #pragma once
-// Layout of a render's output folder (spec/cli.md) and the manifest header of a render.
+// Layout of a render's output folder (docs/cli.md) and the manifest header of a render.
 #include <string>
 
-#include "cli/frame_pipeline.h"
 #include "io/manifest.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace sdfreel {
 

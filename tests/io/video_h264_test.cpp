@@ -1,4 +1,4 @@
-// H.264: yuv420p in tv range, tagged and converted with BT.709 (DESIGN.md "Facts").
+// H.264: yuv420p in tv range, tagged and converted with BT.709 (README.md, "Videos").
 #include <gtest/gtest.h>
 
 #include <algorithm>

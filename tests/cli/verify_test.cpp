@@ -1,0 +1,104 @@
+// `sdfreel verify` takes the golden people keep: a manifest.json, sdfreel's frames.framemd5, or a
+// framemd5 made by stock ffmpeg from the PNGs; anything else is bad input (exit 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli/harness.h"
+
+namespace sdfreel::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Renders three small frames into DIR/out once per test.
+std::string rendered(const std::string& name) {
+  const std::string dir = scratch_dir(name);
+  write_file(dir + "/t.toml", small_timeline(3));
+  EXPECT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  return dir;
+}
+
+// Replaces the hash of data line `line` (0-based) with another valid one.
+std::string with_hash_changed(const std::string& framemd5, int line) {
+  std::string out;
+  int data = 0;
+  size_t pos = 0;
+  while (pos < framemd5.size()) {
+    size_t end = framemd5.find('\n', pos);
+    std::string l = framemd5.substr(pos, end - pos);
+    if (!l.empty() && l[0] != '#' && data++ == line)
+      l = l.substr(0, l.size() - 32) + "0123456789abcdef0123456789abcdef";
+    out += l + "\n";
+    pos = end == std::string::npos ? framemd5.size() : end + 1;
+  }
+  return out;
+}
+
+TEST(VerifyFramemd5, AcceptsTheFramemd5SdfreelWrote) {
+  const std::string dir = rendered("verify-own-framemd5");
+  const RunResult r = run_sdfreel("verify t.toml --manifest out/frames.framemd5", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("verified 3 frames"), std::string::npos) << r.err;
+}
+
+TEST(VerifyFramemd5, AcceptsAFramemd5OfStockFfmpegFromThePngs) {
+  ASSERT_TRUE(have_tool("ffmpeg")) << "scripts/install-deps.sh installs ffmpeg for the tests";
+  const std::string dir = rendered("verify-ffmpeg-framemd5");
+  const RunResult ff =
+      run("ffmpeg -v error -i out/frames/%05d.png -pix_fmt rgb48le -fflags +bitexact -f framemd5 "
+          "golden.framemd5",
+          dir);
+  ASSERT_EQ(ff.status, 0) << ff.err;
+  const RunResult r = run_sdfreel("verify t.toml --manifest golden.framemd5", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("verified 3 frames"), std::string::npos) << r.err;
+
+  // The same file with frame 1's hash changed must fail on frame 1.
+  write_file(dir + "/bad.framemd5", with_hash_changed(read_file(dir + "/golden.framemd5"), 1));
+  const RunResult bad = run_sdfreel("verify t.toml --manifest bad.framemd5", dir);
+  EXPECT_EQ(bad.status, 1) << bad.err;
+  EXPECT_NE(bad.err.find("frame 1 differs"), std::string::npos) << bad.err;
+}
+
+TEST(VerifyFramemd5, AFramemd5OfAnotherResolutionFailsAndSaysSo) {
+  const std::string dir = rendered("verify-framemd5-size");
+  const RunResult r =
+      run_sdfreel("verify t.toml --manifest out/frames.framemd5 --resolution 32x18", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("another resolution"), std::string::npos) << r.err;
+}
+
+TEST(VerifyFramemd5, NeitherManifestNorFramemd5IsBadInputAndWritesNothing) {
+  const std::string dir = rendered("verify-bad-reference");
+  const struct {
+    const char* name;
+    std::string text;
+    const char* says;
+  } cases[] = {
+      {"prose.txt", "these are not hashes\n", "expected a manifest.json"},
+      {"short.framemd5", "#hash: MD5\n0, 0, 0, 1, 6912\n", "expected 6 comma-separated fields"},
+      {"badmd5.framemd5", "0, 0, 0, 1, 6912, xyz\n", "is not an MD5"},
+      {"empty.framemd5", "#format: frame checksums\n", "no frame lines"},
+      {"sha.framemd5", "#hash: SHA256\n0, 0, 0, 1, 6912, 0123456789abcdef0123456789abcdef\n",
+       "is not MD5"},
+      {"broken.json", "{\"frames\": [", "not a valid sdfreel manifest.json"},
+      {"other.json", "{\"hello\": 1}", "not a valid sdfreel manifest.json"},
+  };
+  for (const auto& c : cases) {
+    write_file(dir + "/" + c.name, c.text);
+    const RunResult r = run_sdfreel(std::string("verify t.toml --manifest ") + c.name, dir);
+    EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_EQ(r.err.find("json.exception"), std::string::npos) << c.name << ": " << r.err;
+  }
+  const RunResult missing = run_sdfreel("verify t.toml --manifest nowhere.framemd5", dir);
+  EXPECT_EQ(missing.status, 2) << missing.err;
+  const RunResult folder = run_sdfreel("verify t.toml --manifest out", dir);
+  EXPECT_EQ(folder.status, 2) << folder.err;
+  for (const auto& e : fs::directory_iterator(dir + "/out"))
+    EXPECT_EQ(e.path().filename().string().rfind("verify-", 0), std::string::npos) << e.path();
+}
+
+}  // namespace
+}  // namespace sdfreel::test
