@@ -7,6 +7,7 @@
 #define SDFREEL_SCENES(SCENE) \
   SCENE(sdf_morph)            \
   SCENE(lantern_festival)     \
+  SCENE(water_lily)           \
   SCENE(light_beams)
 
 namespace sdfreel {
