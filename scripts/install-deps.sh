@@ -8,6 +8,8 @@ packages=(
   libosmesa6-dev libtomlplusplus-dev libcli11-dev libfmt-dev libtbb-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   ffmpeg   # tests only: stock ffmpeg/ffprobe check our framemd5 and stream tags
+  file dpkg-dev   # cpack -G DEB: dpkg-shlibdeps derives the package's library dependencies
+  clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer, ASan, UBSan), scripts/build-matrix.sh
 )
 missing=()
 for p in "${packages[@]}"; do

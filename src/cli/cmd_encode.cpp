@@ -2,10 +2,13 @@
 // checked against DIR's manifest first.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands_impl.h"
+#include "cli/manifest_input.h"
 #include "cli/output_folder.h"
 #include "io/video_encoder.h"
+#include "timeline/rules.h"
 
 namespace sdfreel {
 
@@ -29,12 +32,15 @@ Rational parse_fps(const std::string& s) {
 }
 
 int run_encode(const EncodeOptions& o) {
-  const auto manifest = read_manifest(o.dir + "/manifest.json");
-  if (!manifest) throw UsageError("no manifest.json in " + o.dir);
+  const std::optional<Manifest> manifest = read_manifest_argument(o.dir + "/manifest.json");
   const ManifestHeader& h = manifest->header;
   const std::string codec = o.codec.empty() ? h.codec : o.codec;
   if (!is_known_codec(codec))
     throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
+  // The container must hold the codec: refused here, before a temporary video is created.
+  const std::string name = std::filesystem::path(o.output).filename().string();
+  if (std::string problem = check_video_name(name, codec); !problem.empty())
+    throw UsageError("-o " + o.output + ": " + problem.substr(problem.find(':') + 2));
   if (codec == "h264" && (h.width % 2 || h.height % 2))
     throw UsageError("h264 (yuv420p) needs an even width and height; the frames are " +
                      std::to_string(h.width) + "x" + std::to_string(h.height));

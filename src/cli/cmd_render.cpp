@@ -7,12 +7,35 @@
 #include "cli/output_folder.h"
 #include "cli/progress.h"
 #include "io/atomic_file.h"
+#include "io/folder_claim.h"
 #include "io/frame_files.h"
 #include "io/video_encoder.h"
 
 namespace sdfreel {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Frame files first, then the journal entry that lists them, then the video: a frame is listed
+// only once its files are complete on disk. Any failure (a full disk) names the frame, exit 1.
+void publish_frame(const std::string& dir, const Timeline& tl, const ManifestHeader& header,
+                   const RenderedFrame& f, VideoEncoder* encoder) {
+  const int i = f.index;
+  try {
+    if (tl.write_exr) write_exr_atomic(frame_path(dir, i, "exr"), f.linear, frame_metadata(tl, f));
+    if (tl.write_png) write_png16_atomic(frame_path(dir, i, "png"), f.display);
+    const double pixels = double(tl.width) * tl.height;
+    record_frame(dir, header,
+                 ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash, f.display_md5,
+                               f.seconds, double(f.stats.sdf_evals) / pixels});
+    if (encoder) encoder->add_frame(f.display);
+  } catch (const std::exception& e) {
+    throw RenderError("frame " + std::to_string(i) + ": " + e.what());
+  }
+}
+
+}  // namespace
 
 int run_render(const RenderOptions& o) {
   Timeline tl = load_with_overrides(o);
@@ -25,19 +48,34 @@ int run_render(const RenderOptions& o) {
   const std::string& dir = tl.out_dir;
 
   fs::create_directories(dir + "/frames");
-  // A killed render may have left a half-written temporary: never a frame, but litter.
+  // A killed render may have left half-written temporaries (frames, manifest, video): never
+  // published, but litter.
   remove_stale_temp_files(dir + "/frames");
   remove_stale_temp_files(dir);
+  FolderClaim claim;
+  bool foreign = false;
+  std::string damaged;
+  const Manifest existing = consolidate_manifest(dir, header, &damaged, [&](bool other_settings) {
+    // Under the folder lock: no render can start or claim in between.
+    foreign = other_settings;
+    if (foreign && FolderClaim::others_active(dir))
+      throw UsageError(dir +
+                       " is being rendered right now with other settings (timeline, backend, "
+                       "resolution, samples, quality or colour): refusing to mix the two renders; "
+                       "use another --out or wait for it to finish");
+    claim.acquire(dir);
+  });
+  if (!damaged.empty())
+    std::fprintf(stderr, "note: %s/manifest.json is damaged (%s); it was set aside\n", dir.c_str(),
+                 damaged.c_str());
   std::optional<Manifest> previous;
   if (o.resume) {
-    previous = read_manifest(dir + "/manifest.json");
-    if (previous && !previous->header.same_render_as(header)) {
+    if (foreign)
       std::fprintf(stderr, "note: %s/manifest.json is from other settings; rendering every frame\n",
                    dir.c_str());
-      previous.reset();
-    }
+    else
+      previous = existing;  // frames on disk are still checked against their hashes below
   }
-  init_manifest(dir, header);
   if (!tl.video.empty() && !whole)
     std::fprintf(stderr,
                  "note: a partial frame range writes no video; run `sdfreel encode %s -o VIDEO` "
@@ -50,29 +88,34 @@ int run_render(const RenderOptions& o) {
         VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf});
 
   Progress progress(int(frames.size()));
-  for (int i : frames) {
-    if (previous) {
-      auto it = previous->frames.find(i);
-      if (it != previous->frames.end()) {
-        if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
-          record_frame(dir, header, it->second);
-          if (encoder) encoder->add_frame(*shown);
-          progress.frame_done(i, 0.0, true);
-          continue;
+  try {
+    for (int i : frames) {
+      if (previous) {
+        auto it = previous->frames.find(i);
+        if (it != previous->frames.end()) {
+          if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
+            // Already listed in the manifest consolidated above.
+            if (encoder) encoder->add_frame(*shown);
+            progress.frame_done(i, 0.0, true);
+            continue;
+          }
         }
       }
+      RenderedFrame f = pipe.render(i);
+      publish_frame(dir, tl, header, f, encoder.get());
+      progress.frame_done(i, f.seconds);
     }
-    RenderedFrame f = pipe.render(i);
-    if (tl.write_exr) write_exr_atomic(frame_path(dir, i, "exr"), f.linear, frame_metadata(tl, f));
-    if (tl.write_png) write_png16_atomic(frame_path(dir, i, "png"), f.display);
-    const double pixels = double(tl.width) * tl.height;
-    record_frame(dir, header,
-                 ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash, f.display_md5,
-                               f.seconds, double(f.stats.sdf_evals) / pixels});
-    if (encoder) encoder->add_frame(f.display);
-    progress.frame_done(i, f.seconds);
+  } catch (const std::exception&) {
+    // The frames finished before the failure are listed in manifest.json and frames.framemd5
+    // too, not only in the journal (best effort: the disk may be full).
+    try {
+      consolidate_manifest(dir, header);
+    } catch (const std::exception&) {
+    }
+    throw;
   }
   progress.finish();
+  consolidate_manifest(dir, header);
   if (encoder) {
     encoder->finish();
     std::fprintf(stderr, "wrote %s/%s\n", dir.c_str(), tl.video.c_str());

@@ -1,8 +1,8 @@
 #pragma once
 // One add_*_command per command file; each sets `status` when its command runs.
-#include "cli/errors.h"
-#include "cli/frame_pipeline.h"
 #include "cli/render_options.h"
+#include "pipeline/errors.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace CLI {
 class App;
@@ -16,5 +16,6 @@ void add_verify_command(CLI::App& app, int& status);
 void add_encode_command(CLI::App& app, int& status);
 void add_scenes_command(CLI::App& app, int& status);
 void add_bench_command(CLI::App& app, int& status);
+void add_slurm_command(CLI::App& app, int& status);
 
 }  // namespace sdfreel

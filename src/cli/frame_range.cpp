@@ -4,16 +4,18 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "cli/errors.h"
+#include "cli/option_numbers.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 
 namespace {
 
 int parse_index(const std::string& s, const std::string& spec) {
-  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9)
-    throw UsageError("--frames '" + spec + "': '" + s + "' is not a frame number");
-  return std::atoi(s.c_str());
+  // Frame counts are below 1e8 (the timeline's limit); larger numbers are refused as too large.
+  const auto v = parse_count(s, 999999999);
+  if (!v) throw UsageError("--frames '" + spec + "': '" + s + "' is not a frame number");
+  return int(*v);
 }
 
 }  // namespace
@@ -44,15 +46,21 @@ std::vector<int> parse_frame_list(const std::string& spec, int count) {
 }
 
 std::vector<int> shard_of(const std::vector<int>& frames, const std::string& spec) {
-  long i = -1, n = -1;
-  char slash = 0, extra = 0;
-  std::stringstream ss(spec);
-  ss >> i >> slash >> n;
-  if (!ss || slash != '/' || (ss >> extra) || n < 1 || i < 0 || i >= n)
+  const size_t slash = spec.find('/');
+  const std::string_view text(spec);
+  const auto i =
+      slash == std::string::npos ? std::nullopt : parse_count(text.substr(0, slash), INT64_MAX);
+  const auto n =
+      slash == std::string::npos ? std::nullopt : parse_count(text.substr(slash + 1), INT64_MAX);
+  if (!i || !n || *n < 1 || *i >= *n)
     throw UsageError("--shard '" + spec + "': expected I/N with 0 <= I < N");
-  const size_t total = frames.size();
-  const size_t begin = total * size_t(i) / size_t(n), end = total * size_t(i + 1) / size_t(n);
-  return std::vector<int>(frames.begin() + begin, frames.begin() + end);
+  // 128-bit products: total * I cannot overflow even for I and N near 2^63.
+  using u128 = unsigned __int128;
+  const u128 total = frames.size();
+  const size_t begin = size_t(total * u128(*i) / u128(*n));
+  const size_t end = size_t(total * (u128(*i) + 1) / u128(*n));
+  return std::vector<int>(frames.begin() + std::ptrdiff_t(begin),
+                          frames.begin() + std::ptrdiff_t(end));
 }
 
 }  // namespace sdfreel

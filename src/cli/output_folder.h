@@ -2,8 +2,8 @@
 // Layout of a render's output folder (docs/cli.md) and the manifest header of a render.
 #include <string>
 
-#include "cli/frame_pipeline.h"
 #include "io/manifest.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace sdfreel {
 

@@ -9,9 +9,12 @@
 #ifdef SDFREEL_HAVE_OSMESA
 #include "backends/osmesa/osmesa_backend.h"
 #endif
-#include "cli/errors.h"
 #include "cli/frame_range.h"
+#include "cli/option_numbers.h"
 #include "io/color.h"
+#include "pipeline/errors.h"
+#include "scenes/registry.h"
+#include "timeline/rules.h"
 
 namespace sdfreel {
 
@@ -51,14 +54,13 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
 
 Timeline load_with_overrides(const RenderOptions& o) {
   OcioChecker checker;
-  Timeline tl = load_timeline(o.timeline_path, &checker);
+  Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker);
   if (!o.resolution.empty()) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(o.resolution.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x')
-      throw UsageError("--resolution '" + o.resolution + "': expected WxH, e.g. 64x36");
-    tl.width = w;
-    tl.height = h;
+    const Resolution r = parse_resolution_option(o.resolution);
+    if (std::string problem = check_resolution(r.width, r.height); !problem.empty())
+      throw InputError(tl.path, 0, 0, "--resolution: " + problem);
+    tl.width = int(r.width);
+    tl.height = int(r.height);
   }
   if (o.samples) tl.samples = o.samples;
   if (!o.quality.empty()) tl.quality = *parse_quality(o.quality);

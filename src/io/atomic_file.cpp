@@ -1,16 +1,19 @@
-// Atomic publication of files: temporary file + fsync + rename.
+// Atomic publication of files: temporary file + checked writes + fsync + rename.
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/fault_injection.h"
 
 namespace fs = std::filesystem;
 
@@ -19,15 +22,18 @@ namespace {
 
 std::atomic<unsigned long> g_temp_counter{0};
 
+[[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
+  throw std::runtime_error("cannot " + what + " " + path + ": " + std::strerror(err));
+}
+
 void fsync_path(const std::string& path, int flags) {
   const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) throw std::runtime_error("cannot open " + path + ": " + std::strerror(errno));
-  const int rc = ::fsync(fd);
+  if (fd < 0) fail("open", path, errno);
+  const int rc = inject_io_fault() ? -1 : ::fsync(fd);
   const int err = errno;
   ::close(fd);
   // Some file systems cannot fsync a directory (EINVAL): the rename is still atomic there.
-  if (rc != 0 && err != EINVAL)
-    throw std::runtime_error("cannot flush " + path + " to disk: " + std::strerror(err));
+  if (rc != 0 && err != EINVAL) fail("flush to disk", path, err);
 }
 
 }  // namespace
@@ -39,10 +45,52 @@ std::string temp_path_for(const std::string& path) {
   return (p.parent_path() / name).string();
 }
 
+int write_fully(int fd, const void* data, size_t size) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    if (inject_io_fault()) return ENOSPC;
+    const ssize_t n = ::write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    if (n == 0) return ENOSPC;  // no progress and no error: treat as a full disk
+    p += n;
+    size -= size_t(n);
+  }
+  return 0;
+}
+
+int sync_and_close(int fd) {
+  int err = 0;
+  if (inject_io_fault() || ::fsync(fd) != 0) err = errno;
+  // close() can report a deferred write error (NFS, some FUSE file systems): it counts too.
+  if ((inject_io_fault() || ::close(fd) != 0) && err == 0) err = errno;
+  return err;
+}
+
+void write_file_atomic(const std::string& path, const void* data, size_t size) {
+  const std::string temp = temp_path_for(path);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) fail("write", path, errno);
+  int err = write_fully(fd, data, size);
+  struct stat st {};
+  if (err == 0 && ::fstat(fd, &st) != 0) err = errno;
+  if (err == 0 && st.st_size != off_t(size)) err = ENOSPC;  // short file: never publish
+  if (err != 0) {
+    ::close(fd);
+  } else {
+    err = sync_and_close(fd);
+  }
+  if (err != 0) {
+    discard_temp_file(temp);
+    fail("write", path, err);
+  }
+  commit_temp_file(temp, path);
+}
+
 void commit_temp_file(const std::string& temp, const std::string& path) {
   try {
     fsync_path(temp, O_RDONLY);
-    if (std::rename(temp.c_str(), path.c_str()) != 0)
+    if (inject_io_fault() || std::rename(temp.c_str(), path.c_str()) != 0)
       throw std::runtime_error("cannot rename " + temp + " to " + path + ": " +
                                std::strerror(errno));
   } catch (...) {

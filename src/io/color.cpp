@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "render/data_files.h"
+
 namespace OCIO = OCIO_NAMESPACE;
 namespace fs = std::filesystem;
 
@@ -90,18 +92,8 @@ constexpr int kRowsPerChunk = 16;
 std::string builtin_ocio_config_path() {
   if (const char* env = std::getenv("SDFREEL_OCIO_CONFIG"); env && *env) return env;
 
-  std::vector<fs::path> candidates;
+  const std::vector<fs::path> candidates = data_file_candidates(kConfigRelative);
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path dir = exe.parent_path();
-    candidates.push_back(dir / ".." / kConfigRelative);                        // build/sdfreel
-    candidates.push_back(dir / ".." / ".." / kConfigRelative);                 // build/sub/test_x
-    candidates.push_back(dir / ".." / "share" / "sdfreel" / kConfigRelative);  // installed
-  }
-#ifdef SDFREEL_SOURCE_DIR
-  candidates.push_back(fs::path(SDFREEL_SOURCE_DIR) / kConfigRelative);
-#endif
   for (const auto& c : candidates)
     if (is_file(c)) return fs::weakly_canonical(c, ec).string();
 

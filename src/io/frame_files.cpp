@@ -1,13 +1,11 @@
 // EXR and PNG frame files through OpenImageIO, published atomically.
 #include "io/frame_files.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <fcntl.h>
-#include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
 #include <stdexcept>
+#include <vector>
 
 #include "io/atomic_file.h"
 
@@ -26,24 +24,25 @@ void check_size(const std::string& path, int width, int height, size_t values, i
                              ": image is empty or its size is inconsistent");
 }
 
-// Writes pixels with the named OIIO format plugin to a temporary file, then publishes it. The
-// plugin is named explicitly because the temporary file's name has no image extension.
+// Encodes pixels with the named OIIO format plugin into memory, then writes the bytes with every
+// write checked (write_file_atomic). OIIO's own file writers do not all report a short write on a
+// full disk; encoding to memory leaves the disk to code that does.
 void write_image_atomic(const std::string& path, const char* format, const OIIO::ImageSpec& spec,
                         OIIO::TypeDesc data_type, const void* data) {
   auto out = OIIO::ImageOutput::create(format);
   if (!out)
     throw std::runtime_error("cannot write " + path + ": OpenImageIO has no " + format +
                              " writer: " + OIIO::geterror());
-  const std::string temp = temp_path_for(path);
-  const bool ok = out->open(temp, spec) && out->write_image(data_type, data) && out->close();
-  if (!ok) {
-    const std::string why = out->geterror();
-    out.reset();
-    discard_temp_file(temp);
-    throw std::runtime_error("cannot write " + path + ": " + why);
-  }
+  if (!out->supports("ioproxy"))
+    throw std::runtime_error("cannot write " + path + ": this OpenImageIO's " + format +
+                             " writer cannot write to memory");
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  out->set_ioproxy(&memory);
+  if (!(out->open(path, spec) && out->write_image(data_type, data) && out->close()))
+    throw std::runtime_error("cannot write " + path + ": " + out->geterror());
   out.reset();
-  commit_temp_file(temp, path);
+  write_file_atomic(path, bytes.data(), bytes.size());
 }
 
 std::unique_ptr<OIIO::ImageInput> open_input(const std::string& path) {
@@ -101,27 +100,7 @@ ImageRGBA read_exr(const std::string& path) {
 }
 
 void write_text_atomic(const std::string& path, const std::string& contents) {
-  const std::string temp = temp_path_for(path);
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  size_t done = 0;
-  while (done < contents.size()) {
-    const ssize_t n = ::write(fd, contents.data() + done, contents.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = errno;
-      ::close(fd);
-      discard_temp_file(temp);
-      throw std::runtime_error("cannot write " + path + ": " + std::strerror(err));
-    }
-    done += size_t(n);
-  }
-  if (::close(fd) != 0) {
-    const int err = errno;
-    discard_temp_file(temp);
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(err));
-  }
-  commit_temp_file(temp, path);
+  write_file_atomic(path, contents);
 }
 
 }  // namespace sdfreel

@@ -1,31 +1,24 @@
 #include "io/hash_reference.h"
 
-#include <sys/stat.h>
-
 #include <climits>
-#include <fstream>
-#include <sstream>
 
+#include "io/bounded_read.h"
 #include "io/framemd5_reader.h"
 
 namespace sdfreel {
 
 namespace {
 
-// A framemd5 of a 10-hour 60 fps video is about 30 MB: 256 MiB is far above any real reference.
-constexpr off_t kMaxReferenceBytes = off_t(256) << 20;
-
+// Special files, huge files and missing files are bad input, never a hang or an unbounded read.
 std::string read_reference_text(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw HashReferenceError(path + ": no such file");
-  if (!S_ISREG(st.st_mode)) throw HashReferenceError(path + ": not a regular file");
-  if (st.st_size > kMaxReferenceBytes)
-    throw HashReferenceError(path + ": larger than 256 MiB, not a manifest or framemd5");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw HashReferenceError(path + ": cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::optional<std::string> text;
+  try {
+    text = read_regular_file(path, kMaxManifestBytes);
+  } catch (const std::exception& e) {
+    throw HashReferenceError(e.what());
+  }
+  if (!text) throw HashReferenceError(path + ": no such file");
+  return *text;
 }
 
 HashReference from_manifest(const std::string& path, const std::string& text) {

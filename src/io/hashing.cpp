@@ -1,4 +1,4 @@
-// Frame and file hashes through libavutil (the same MD5 as FFmpeg's framemd5 muxer).
+// Frame hashes through libavutil (the same MD5 as FFmpeg's framemd5 muxer).
 #include "io/hashing.h"
 
 #include <Imath/half.h>
@@ -13,7 +13,6 @@
 extern "C" {
 #include <libavutil/md5.h>
 #include <libavutil/mem.h>
-#include <libavutil/sha.h>
 }
 
 namespace sdfreel {
@@ -62,25 +61,6 @@ class Md5Le16 {
   size_t len_ = 0;
 };
 
-class Sha256 {
- public:
-  Sha256() : ctx_(av_sha_alloc()) {
-    if (!ctx_) throw std::bad_alloc();
-    av_sha_init(ctx_.get(), 256);
-  }
-  void add(const void* data, size_t n) {
-    av_sha_update(ctx_.get(), static_cast<const uint8_t*>(data), n);
-  }
-  std::string hex() {
-    uint8_t digest[32];
-    av_sha_final(ctx_.get(), digest);
-    return to_hex(digest, sizeof(digest));
-  }
-
- private:
-  std::unique_ptr<AVSHA, AvFree> ctx_;
-};
-
 }  // namespace
 
 std::string md5_rgb48le(const ImageRGB16& display) {
@@ -95,25 +75,6 @@ std::string linear_half_hash(const ImageRGBA& linear) {
   auto md5 = std::make_unique<Md5Le16>();
   for (float v : linear.pixels) md5->add(Imath::half(v).bits());
   return md5->hex();
-}
-
-std::string sha256_hex(const std::string& bytes) {
-  Sha256 sha;
-  sha.add(bytes.data(), bytes.size());
-  return sha.hex();
-}
-
-std::string sha256_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
-  Sha256 sha;
-  std::vector<char> buf(1 << 16);
-  while (in) {
-    in.read(buf.data(), std::streamsize(buf.size()));
-    if (in.gcount() > 0) sha.add(buf.data(), size_t(in.gcount()));
-  }
-  if (in.bad()) throw std::runtime_error("cannot read " + path + ": I/O error");
-  return sha.hex();
 }
 
 }  // namespace sdfreel

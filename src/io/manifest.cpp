@@ -5,12 +5,13 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
+#include "io/bounded_read.h"
 #include "io/frame_files.h"
+#include "io/manifest_journal.h"
 
 namespace sdfreel {
 
@@ -22,6 +23,33 @@ bool ManifestHeader::same_render_as(const ManifestHeader& o) const {
          fps_den == o.fps_den && frame_count == o.frame_count && samples == o.samples &&
          quality == o.quality && color_config == o.color_config && display == o.display &&
          view == o.view;
+}
+
+json manifest_frame_json(const ManifestFrame& f) {
+  return {{"index", f.index},
+          {"video_time", f.video_time},
+          {"scene_time", f.scene_time},
+          {"linear_md5", f.linear_hash},
+          {"display_md5", f.display_md5},
+          {"render_seconds", f.render_seconds},
+          {"sdf_evals_per_pixel", f.sdf_evals_per_pixel}};
+}
+
+ManifestFrame manifest_frame_from_json(const json& f, int frame_count) {
+  ManifestFrame fr;
+  // Read wide and range-checked: an index of 2^40 must not wrap to frame 0.
+  const int64_t index = f.at("index").get<int64_t>();
+  if (index < 0 || index >= frame_count)
+    throw std::runtime_error("malformed manifest: frame index " + std::to_string(index) +
+                             " is outside 0.." + std::to_string(frame_count - 1));
+  fr.index = int(index);
+  fr.video_time = f.at("video_time");
+  fr.scene_time = f.at("scene_time");
+  fr.linear_hash = f.at("linear_md5");
+  fr.display_md5 = f.at("display_md5");
+  fr.render_seconds = f.at("render_seconds");
+  fr.sdf_evals_per_pixel = f.value("sdf_evals_per_pixel", 0.0);
+  return fr;
 }
 
 std::string manifest_to_json(const Manifest& m) {
@@ -43,14 +71,7 @@ std::string manifest_to_json(const Manifest& m) {
   j["frame_files"] = h.frame_files;
   if (!m.frames.empty()) j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
   json frames = json::array();
-  for (const auto& [i, f] : m.frames)
-    frames.push_back({{"index", f.index},
-                      {"video_time", f.video_time},
-                      {"scene_time", f.scene_time},
-                      {"linear_md5", f.linear_hash},
-                      {"display_md5", f.display_md5},
-                      {"render_seconds", f.render_seconds},
-                      {"sdf_evals_per_pixel", f.sdf_evals_per_pixel}});
+  for (const auto& [i, f] : m.frames) frames.push_back(manifest_frame_json(f));
   j["frames"] = frames;
   return j.dump(2) + "\n";
 }
@@ -80,14 +101,7 @@ Manifest manifest_from_json(const std::string& text) {
     h.video = j.value("video", "");
     h.frame_files = j.at("frame_files").get<std::vector<std::string>>();
     for (const json& f : j.at("frames")) {
-      ManifestFrame fr;
-      fr.index = f.at("index");
-      fr.video_time = f.at("video_time");
-      fr.scene_time = f.at("scene_time");
-      fr.linear_hash = f.at("linear_md5");
-      fr.display_md5 = f.at("display_md5");
-      fr.render_seconds = f.at("render_seconds");
-      fr.sdf_evals_per_pixel = f.value("sdf_evals_per_pixel", 0.0);
+      const ManifestFrame fr = manifest_frame_from_json(f, h.frame_count);
       m.frames[fr.index] = fr;
     }
   } catch (const json::exception& e) {
@@ -100,12 +114,19 @@ Manifest manifest_from_json(const std::string& text) {
   return m;
 }
 
+std::optional<Manifest> read_manifest_json(const std::string& path) {
+  const std::optional<std::string> text = read_regular_file(path, kMaxManifestBytes);
+  if (!text) return std::nullopt;
+  return manifest_from_json(*text);
+}
+
 std::optional<Manifest> read_manifest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return manifest_from_json(ss.str());
+  std::optional<Manifest> m = read_manifest_json(path);
+  if (!m) return m;
+  // Frames finished since the last consolidation (or by a killed render) are in the journal.
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  merge_journal(dir.empty() ? "." : dir, render_key(m->header), *m);
+  return m;
 }
 
 // FFmpeg's framemd5 muxer output, data lines "%d, %10lld, %10lld, %8lld, %8d, %s".
@@ -143,16 +164,21 @@ class DirLock {
   int fd_;
 };
 
-Manifest load_compatible(const std::string& dir, const ManifestHeader& header) {
+// manifest.json if it belongs to this render, else nothing; `damaged` says why it was not used.
+std::optional<Manifest> load_own(const std::string& dir, const ManifestHeader& header,
+                                 std::string* damaged, bool* foreign) {
   std::optional<Manifest> m;
   try {
-    m = read_manifest(dir + "/manifest.json");
-  } catch (const std::exception&) {
-    m.reset();  // a foreign or damaged manifest is replaced, never trusted
+    m = read_manifest_json(dir + "/manifest.json");
+  } catch (const std::exception& e) {
+    if (damaged) *damaged = e.what();  // a damaged manifest is replaced, never trusted
+    return std::nullopt;
   }
-  if (!m || !m->header.same_render_as(header)) return Manifest{header, {}};
-  m->header = header;
-  return *m;
+  if (m && !m->header.same_render_as(header)) {
+    if (foreign) *foreign = true;
+    return std::nullopt;
+  }
+  return m;
 }
 
 void write_both(const std::string& dir, const Manifest& m) {
@@ -165,14 +191,21 @@ void write_both(const std::string& dir, const Manifest& m) {
 void record_frame(const std::string& dir, const ManifestHeader& header,
                   const ManifestFrame& frame) {
   DirLock lock(dir);
-  Manifest m = load_compatible(dir, header);
-  m.frames[frame.index] = frame;
-  write_both(dir, m);
+  append_journal(dir, render_key(header), frame);
 }
 
-void init_manifest(const std::string& dir, const ManifestHeader& header) {
+Manifest consolidate_manifest(const std::string& dir, const ManifestHeader& header,
+                              std::string* damaged, const std::function<void(bool)>& on_foreign) {
   DirLock lock(dir);
-  write_both(dir, load_compatible(dir, header));
+  bool foreign = false;
+  std::optional<Manifest> own = load_own(dir, header, damaged, &foreign);
+  if (on_foreign) on_foreign(foreign);  // may throw: refuse to replace a live render's manifest
+  Manifest m = own ? *own : Manifest{header, {}};
+  m.header = header;
+  merge_journal(dir, render_key(header), m);
+  write_both(dir, m);
+  clear_journal(dir);  // after the rewrite: a kill in between leaves duplicates, never losses
+  return m;
 }
 
 }  // namespace sdfreel

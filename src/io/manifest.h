@@ -1,8 +1,12 @@
 #pragma once
 // manifest.json (docs/cli.md): what was rendered, with which settings and libraries, and per-frame
-// hashes and times. Also writes frames.framemd5 from it. Both are rewritten atomically after every
-// frame, under a file lock, so concurrent shards in one folder merge instead of clobbering.
+// hashes and times. Also writes frames.framemd5 from it. During a render, finished frames are
+// appended to manifest.journal (O(1) a frame, see manifest_journal.h); manifest.json and
+// frames.framemd5 are rewritten atomically from both when a render starts and ends, under a file
+// lock, so concurrent shards in one folder merge instead of clobbering.
+#include <functional>
 #include <map>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,14 +49,24 @@ struct Manifest {
 };
 
 std::string manifest_to_json(const Manifest& m);
-Manifest manifest_from_json(const std::string& text);            // throws std::runtime_error
-std::optional<Manifest> read_manifest(const std::string& path);  // nullopt if missing
+Manifest manifest_from_json(const std::string& text);  // throws std::runtime_error
+nlohmann::json manifest_frame_json(const ManifestFrame& f);
+// Throws for a missing field or an index outside 0..frame_count-1.
+ManifestFrame manifest_frame_from_json(const nlohmann::json& f, int frame_count);
+// manifest.json alone; nullopt if missing.
+std::optional<Manifest> read_manifest_json(const std::string& path);
+// manifest.json plus the frames its folder's journal adds; nullopt if manifest.json is missing.
+std::optional<Manifest> read_manifest(const std::string& path);
 std::string framemd5_text(const Manifest& m);
 
-// Locks DIR/.manifest.lock, merges `frame` into DIR/manifest.json (starting afresh when the
-// existing manifest belongs to another render), rewrites manifest.json and frames.framemd5.
+// Locks DIR/.manifest.lock and appends `frame` to the journal: O(1), whatever the frame count.
 void record_frame(const std::string& dir, const ManifestHeader& header, const ManifestFrame& frame);
-// Writes the header with no frames when the folder has no compatible manifest yet.
-void init_manifest(const std::string& dir, const ManifestHeader& header);
+// Locks DIR/.manifest.lock, merges DIR/manifest.json (when it belongs to this render) with the
+// journal, rewrites manifest.json and frames.framemd5, empties the journal and returns the result.
+// `damaged` receives why an unreadable manifest.json was set aside. `on_foreign(true)` is called
+// when manifest.json belongs to other settings, before anything is written; it may throw to refuse.
+Manifest consolidate_manifest(const std::string& dir, const ManifestHeader& header,
+                              std::string* damaged = nullptr,
+                              const std::function<void(bool)>& on_foreign = nullptr);
 
 }  // namespace sdfreel

@@ -28,10 +28,11 @@ struct AvCodecContextFree {
 struct SwsContextFree {
   void operator()(SwsContext* c) const { sws_freeContext(c); }
 };
-// An output format context: closes its file (if open) before freeing.
+// An output format context: closes its file (if open, and not a custom one) before freeing.
 struct AvOutputContextFree {
   void operator()(AVFormatContext* c) const {
-    if (c->pb && !(c->oformat->flags & AVFMT_NOFILE)) avio_closep(&c->pb);
+    if (c->pb && !(c->flags & AVFMT_FLAG_CUSTOM_IO) && !(c->oformat->flags & AVFMT_NOFILE))
+      avio_closep(&c->pb);
     avformat_free_context(c);
   }
 };

@@ -2,33 +2,14 @@
 
 #include <climits>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
-#include <system_error>
 
 #include "io/video_av.h"
 #include "io/video_codecs.h"
+#include "io/video_sink.h"
 
 namespace sdfreel {
-namespace fs = std::filesystem;
 namespace {
-
-// ".name.tmp.ext" beside the final file: same file system, so the rename is atomic.
-fs::path temp_path_for(const fs::path& final_path) {
-  return final_path.parent_path() /
-         ("." + final_path.stem().string() + ".tmp" + final_path.extension().string());
-}
-
-// Removes the temporary file unless the encode finished; declared before the libav objects so
-// that it runs after they have closed the file.
-struct TempFileGuard {
-  fs::path path;
-  bool armed = true;
-  ~TempFileGuard() {
-    std::error_code ignored;
-    if (armed) fs::remove(path, ignored);
-  }
-};
 
 AVRational checked_fps(const Rational& fps) {
   if (fps.num <= 0 || fps.den <= 0 || fps.num > INT_MAX || fps.den > INT_MAX)
@@ -63,7 +44,8 @@ bool is_mov_family(const AVOutputFormat* f) {
 struct VideoEncoder::Impl {
   VideoSettings settings;
   const VideoCodecSpec& spec;
-  TempFileGuard temp;
+  // Declared before the libav objects, so the file outlives the muxer that writes into it.
+  std::unique_ptr<VideoFileSink> sink;
   AvOutputContextPtr format;
   AvCodecContextPtr encoder;
   AVStream* stream = nullptr;  // owned by format
@@ -73,10 +55,9 @@ struct VideoEncoder::Impl {
   int64_t next_pts = 0;
   bool finished = false;
 
-  explicit Impl(const VideoSettings& s)
-      : settings(s), spec(checked_codec(s)), temp{temp_path_for(s.path)} {
+  explicit Impl(const VideoSettings& s) : settings(s), spec(checked_codec(s)) {
     const AVRational fps = checked_fps(s.fps);
-    // Chosen from the final name: the temporary one's extension must not matter.
+    // Chosen from the final name: the temporary one (".NAME.tmp-PID-N") has no extension.
     const AVOutputFormat* container = av_guess_format(nullptr, s.path.c_str(), nullptr);
     if (!container)
       throw std::runtime_error("video: cannot tell the container from the file name " + s.path +
@@ -135,7 +116,8 @@ struct VideoEncoder::Impl {
   }
 
   void open_output(const AVOutputFormat* container) {
-    const std::string temp_name = temp.path.string();
+    sink = std::make_unique<VideoFileSink>(settings.path);
+    const std::string& temp_name = sink->temp_path();
     AVFormatContext* raw = nullptr;
     av_check(avformat_alloc_output_context2(&raw, container, nullptr, temp_name.c_str()),
              "creating the " + std::string(container->name) + " container");
@@ -149,7 +131,8 @@ struct VideoEncoder::Impl {
     stream->time_base = encoder->time_base;  // a hint; the muxer may pick its own
     stream->avg_frame_rate = encoder->framerate;
 
-    av_check(avio_open(&format->pb, temp_name.c_str(), AVIO_FLAG_WRITE), "opening " + temp_name);
+    format->pb = sink->avio();
+    format->flags |= AVFMT_FLAG_CUSTOM_IO;
     AVDictionary* options = nullptr;
     if (is_mov_family(container)) av_dict_set(&options, "movflags", "+faststart", 0);
     const int ret = avformat_write_header(format.get(), &options);
@@ -192,13 +175,7 @@ struct VideoEncoder::Impl {
     if (finished) return;
     encode(nullptr);
     av_check(av_write_trailer(format.get()), "finishing " + settings.path);
-    av_check(avio_closep(&format->pb), "closing " + temp.path.string());
-    std::error_code ec;
-    fs::rename(temp.path, settings.path, ec);
-    if (ec)
-      throw std::runtime_error("video: cannot rename " + temp.path.string() + " to " +
-                               settings.path + ": " + ec.message());
-    temp.armed = false;
+    sink->commit();
     finished = true;
   }
 };

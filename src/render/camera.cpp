@@ -13,7 +13,8 @@ CameraBasis make_camera_basis(const CameraPose& pose) {
   // +Y is the world up. Looking (nearly) straight up or down, +Y and forward are parallel and the
   // cross product vanishes: use +Z as the reference instead, so image-up points along +Z when
   // looking down and along -Z when looking up (continuous with a slightly tilted camera).
-  // Guarded by tests/hard_cases/look_straight_up and look_straight_down.
+  // Guarded by tests/hard_cases/lantern_festival/look_straight_up and
+  // sdf_morph/look_straight_down.
   glm::dvec3 ref_up(0.0, 1.0, 0.0);
   if (std::abs(forward.y) > 0.999999) ref_up = glm::dvec3(0.0, 0.0, forward.y > 0.0 ? -1.0 : 1.0);
   glm::dvec3 right = glm::normalize(glm::cross(forward, ref_up));

@@ -1,17 +1,25 @@
 #include "scenes/registry.h"
 
+// Every built-in scene, one line each, in the order `sdfreel scenes` lists them. SCENE(name)
+// stands for SceneInfo name_scene_info(), defined in src/scenes/<name>/<name>.cpp. Listed
+// explicitly (no static registrars): static libraries drop unreferenced objects, and an explicit
+// list keeps the order stable.
+#define SDFREEL_SCENES(SCENE) \
+  SCENE(sdf_morph)            \
+  SCENE(lantern_festival)     \
+  SCENE(water_lily)           \
+  SCENE(light_beams)
+
 namespace sdfreel {
 
-// Each scene file defines one of these. Listed explicitly (no static registrars): static
-// libraries drop unreferenced objects, and an explicit list keeps the order stable.
-SceneInfo sdf_morph_scene_info();
-SceneInfo lantern_festival_scene_info();
+#define SDFREEL_DECLARE_SCENE(name) SceneInfo name##_scene_info();
+SDFREEL_SCENES(SDFREEL_DECLARE_SCENE)
+#undef SDFREEL_DECLARE_SCENE
 
 const std::vector<SceneInfo>& all_scenes() {
-  static const std::vector<SceneInfo> scenes = {
-      sdf_morph_scene_info(),
-      lantern_festival_scene_info(),
-  };
+#define SDFREEL_SCENE_INFO(name) name##_scene_info(),
+  static const std::vector<SceneInfo> scenes = {SDFREEL_SCENES(SDFREEL_SCENE_INFO)};
+#undef SDFREEL_SCENE_INFO
   return scenes;
 }
 

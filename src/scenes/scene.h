@@ -1,7 +1,7 @@
 #pragma once
 // A scene: code that turns a primary ray into linear radiance (CPU backend), plus the metadata
-// that the timeline, `sdfreel scenes` and the OSMesa backend need. One file per scene registers it
-// in registry.cpp.
+// that the timeline, `sdfreel scenes`, the OSMesa backend and the tests need. Each scene lives in
+// src/scenes/<scene>/ and is registered by one line in registry.cpp (docs/adding-a-scene.md).
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
@@ -55,8 +55,15 @@ struct SceneInfo {
   std::string description;  // one paragraph, printed by `sdfreel scenes NAME`
   std::vector<ParamSpec> params;
   CameraPose default_camera;
-  std::string shader;  // GLSL file under shaders/, for the OSMesa backend
+  // Where this scene's marches are hardest (close-ups, grazing rays, eyes low or looking up): the
+  // packet-path and CPU-against-GL tests render these besides the poses of test_camera_poses().
+  std::vector<CameraPose> test_poses;
+  std::string shader;  // GLSL main file relative to shaders/ ("<scene>/<scene>.glsl"), for OSMesa
   std::function<std::unique_ptr<Scene>()> make;
 };
+
+// The poses the scene-wide tests render: the default camera, the same eye looking down steeply
+// and nearly level with a narrow field of view (any scene), then the scene's own test_poses.
+std::vector<CameraPose> test_camera_poses(const SceneInfo& info);
 
 }  // namespace sdfreel

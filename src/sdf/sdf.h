@@ -19,7 +19,7 @@ namespace sdfreel {
 constexpr float SAFE_NORMALIZE_MIN_LENGTH2 = 1e-30f;
 
 // normalize() that never divides by zero: a (near-)zero vector maps to +Y (a tetrahedron normal
-// whose taps cancel at a crease of min/max: tests/hard_cases/crease_normals).
+// whose taps cancel at a crease of min/max: tests/hard_cases/sdf_morph/crease_normals).
 inline glm::vec3 safe_normalize(const glm::vec3& v) {
   const float len2 = glm::dot(v, v);
   if (!(len2 > SAFE_NORMALIZE_MIN_LENGTH2)) return glm::vec3(0.0f, 1.0f, 0.0f);
@@ -149,7 +149,7 @@ inline F opIntersection(F d1, F d2) {
 }
 
 // Polynomial smooth minimum with blend radius k; k <= 0 is the hard operation (no division by 0:
-// tests/hard_cases/smooth_union_k0).
+// tests/hard_cases/sdf_morph/smooth_union_k0).
 template <class F>
 inline F opSmoothUnion(F d1, F d2, float k) {
   if (!(k > 0.0f)) return opUnion(d1, d2);

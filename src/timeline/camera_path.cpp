@@ -6,11 +6,26 @@
 namespace sdfreel {
 namespace {
 
-// Arc-length table resolution: segments per key interval. Fixed, so sampling is deterministic.
+// Arc-length table resolution: segments per key interval, 1024 up to 1024 intervals, then fewer
+// (at least 8) so the table stays near 2^20 entries (16 MiB) however many keys there are. A
+// function of the key count only, so sampling is deterministic.
 constexpr int kArcSegments = 1024;
+constexpr size_t kArcTableEntries = size_t(1) << 20;
+constexpr int kMinArcSegments = 8;
+
+int arc_segments(size_t intervals) {
+  if (intervals == 0) return kArcSegments;
+  const size_t fit = kArcTableEntries / intervals;
+  return int(std::clamp<size_t>(fit, kMinArcSegments, kArcSegments));
+}
 
 struct PathCurves {
   Curve position, target, fov, roll;
+};
+
+// Cumulative chord length of the position curve against key time.
+struct ArcTable {
+  std::vector<double> times, lengths;
 };
 
 PathCurves make_curves(const CameraPath& path) {
@@ -40,22 +55,33 @@ CameraPose pose_at(const PathCurves& c, double t) {
   return pose;
 }
 
-// The key time at which the position curve has covered `fraction` (0..1) of its total length,
-// found in a dense table of chord lengths.
-double arc_length_time(const Curve& position, double fraction) {
+ArcTable make_arc_table(const Curve& position) {
   const std::vector<double>& keys = position.t;
-  std::vector<double> times{keys.front()}, lengths{0.0};
+  const int segments = arc_segments(keys.size() - 1);
+  ArcTable a;
+  a.times.reserve((keys.size() - 1) * size_t(segments) + 1);
+  a.lengths.reserve(a.times.capacity());
+  a.times.push_back(keys.front());
+  a.lengths.push_back(0.0);
   glm::dvec3 prev = to_dvec3(position.values.front());
   for (size_t k = 0; k + 1 < keys.size(); ++k) {
-    for (int j = 1; j <= kArcSegments; ++j) {
-      double t = j == kArcSegments ? keys[k + 1]
-                                   : keys[k] + (keys[k + 1] - keys[k]) * (double(j) / kArcSegments);
+    for (int j = 1; j <= segments; ++j) {
+      double t =
+          j == segments ? keys[k + 1] : keys[k] + (keys[k + 1] - keys[k]) * (double(j) / segments);
       glm::dvec3 p = to_dvec3(position.sample(t));
-      times.push_back(t);
-      lengths.push_back(lengths.back() + glm::distance(prev, p));
+      a.times.push_back(t);
+      a.lengths.push_back(a.lengths.back() + glm::distance(prev, p));
       prev = p;
     }
   }
+  return a;
+}
+
+// The key time at which the position curve has covered `fraction` (0..1) of its total length,
+// found in the table by binary search.
+double arc_length_time(const ArcTable& table, const std::vector<double>& keys, double fraction) {
+  const std::vector<double>& times = table.times;
+  const std::vector<double>& lengths = table.lengths;
   const double total = lengths.back();
   if (!(total > 0.0)) return keys.front() + fraction * (keys.back() - keys.front());
   const double goal = fraction * total;
@@ -69,16 +95,37 @@ double arc_length_time(const Curve& position, double fraction) {
 
 }  // namespace
 
+struct CameraPathTables {
+  PathCurves curves;
+  ArcTable arc;  // empty unless constant_speed with two keys or more
+};
+
+namespace {
+
+std::shared_ptr<const CameraPathTables> make_tables(const CameraPath& path) {
+  auto tables = std::make_shared<CameraPathTables>();
+  tables->curves = make_curves(path);
+  if (path.constant_speed && path.keys.size() > 1)
+    tables->arc = make_arc_table(tables->curves.position);
+  return tables;
+}
+
+}  // namespace
+
+void CameraPath::prepare() {
+  tables_ = keys.empty() ? nullptr : make_tables(*this);
+}
+
 CameraPose CameraPath::sample(double t, const CameraPose& fallback) const {
   if (keys.empty()) return fallback;
-  PathCurves curves = make_curves(*this);
+  const std::shared_ptr<const CameraPathTables> tables = tables_ ? tables_ : make_tables(*this);
   const double first = keys.front().t, last = keys.back().t;
   if (constant_speed && keys.size() > 1 && t > first && t < last) {
     // Position, target, fov and roll all follow the re-timed parameter, so the camera keeps
     // looking where the keys say it looks at each point of the path.
-    t = arc_length_time(curves.position, (t - first) / (last - first));
+    t = arc_length_time(tables->arc, tables->curves.position.t, (t - first) / (last - first));
   }
-  return pose_at(curves, t);
+  return pose_at(tables->curves, t);
 }
 
 }  // namespace sdfreel

@@ -54,7 +54,7 @@ Vec catmull_rom(const Vec& p0, const Vec& p1, const Vec& p2, const Vec& p3, doub
   if (d1 == 0.0) return p1;  // the segment is a single point
   // A neighbour that coincides with its end point makes a zero knot interval (0/0 below). Its
   // blend term is that same point whatever the interval, so any positive interval is exact.
-  // Guarded by tests/hard_cases/repeated_camera_keys.
+  // Guarded by tests/hard_cases/sdf_morph/repeated_camera_keys.
   if (d0 <= 1e-12 * d1) d0 = d1;
   if (d2 <= 1e-12 * d1) d2 = d1;
   const double t0 = 0.0, t1 = d0, t2 = d0 + d1, t3 = d0 + d1 + d2;

@@ -1,7 +1,10 @@
 // load_timeline: read the file, refuse what the spec calls bad input, fill a Timeline.
-#include <filesystem>
-#include <fstream>
-#include <system_error>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "timeline/rules.h"
 #include "timeline/sections.h"
@@ -14,18 +17,29 @@ namespace {
 constexpr uint64_t kMaxFileBytes = 16u << 20;  // 16 MiB
 
 std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, 0, 0, "cannot read: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "cannot open the file");
-  // Read in chunks and stop one byte past the limit: a huge file (or a pipe) is refused without
-  // reading it all.
+  // O_NONBLOCK: opening a FIFO without a writer would otherwise block forever. Only regular files
+  // are read: a FIFO, a device (/dev/zero) or a directory is refused before any byte is read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0)
+    throw InputError(path, 0, 0, std::string("cannot open the file: ") + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw InputError(path, 0, 0,
+                     S_ISDIR(st.st_mode) ? "cannot read: it is a directory"
+                                         : "cannot read: not a regular file (a FIFO or device?)");
+  }
+  // Read in chunks and stop one byte past the limit: a huge file is refused without reading it all.
   std::string bytes;
   char chunk[1 << 16];
-  while (bytes.size() <= kMaxFileBytes && in.read(chunk, sizeof chunk).gcount() > 0)
-    bytes.append(chunk, size_t(in.gcount()));
-  if (in.bad()) throw InputError(path, 0, 0, "cannot read the file");
+  ssize_t n = 0;
+  while (bytes.size() <= kMaxFileBytes && (n = ::read(fd, chunk, sizeof chunk)) != 0) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    bytes.append(chunk, size_t(n));
+  }
+  ::close(fd);
+  if (n < 0) throw InputError(path, 0, 0, "cannot read the file");
   if (bytes.size() > kMaxFileBytes)
     throw InputError(path, 0, 0, "the file is larger than 16 MiB; a timeline is a small text file");
   return bytes;
@@ -47,6 +61,11 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
       r.fail(at ? at->source() : codec ? codec->source() : toml::source_region{}, problem);
     }
   }
+  // The video's container must hold the codec: found here, not after the folder was made.
+  if (std::string problem = check_video_name(tl.video, tl.codec); !problem.empty()) {
+    const toml::node* at = find(root, "output", "video");
+    r.fail(at ? at->source() : toml::source_region{}, problem);
+  }
   if (color) {
     if (std::string problem = color->check(tl.color_config, tl.display, tl.view);
         !problem.empty()) {
@@ -66,8 +85,13 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
 
 }  // namespace
 
-Timeline load_timeline(const std::string& path, const ColorChecker* color) {
-  const std::string text = read_file(path);
+Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                       const ColorChecker* color) {
+  return parse_timeline(scenes, path, read_file(path), color);
+}
+
+Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                        const std::string& text, const ColorChecker* color) {
   if (std::optional<TextPosition> bad = find_invalid_utf8(text))
     throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
 
@@ -85,7 +109,7 @@ Timeline load_timeline(const std::string& path, const ColorChecker* color) {
 
   TomlReader r(path);
   r.check_keys(root, "", {"video", "output", "color", "time", "camera", "params"});
-  const SceneInfo& scene = parse_video(r, root, tl);
+  const SceneInfo& scene = parse_video(r, root, scenes, tl);
   parse_output(r, root, tl);
   parse_color(r, root, tl);
   parse_time(r, root, tl);

@@ -104,6 +104,7 @@ void parse_camera(const TomlReader& r, const toml::table& root, const SceneInfo&
                 *keys.get(i)->as_table()->get("t"), name);
     tl.camera.keys.push_back(key);
   }
+  tl.camera.prepare();  // curves and arc-length table once, not per frame
 }
 
 void parse_params(const TomlReader& r, const toml::table& root, const SceneInfo& scene,

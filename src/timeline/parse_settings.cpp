@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <numeric>
 
-#include "scenes/registry.h"
 #include "timeline/rules.h"
 #include "timeline/sections.h"
 #include "timeline/suggest.h"
@@ -66,7 +65,8 @@ std::string timeline_stem(const std::string& path) {
 
 }  // namespace
 
-const SceneInfo& parse_video(const TomlReader& r, const toml::table& root, Timeline& tl) {
+const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
+                             const std::vector<SceneInfo>& scenes, Timeline& tl) {
   const toml::table* video = section(r, root, "video");
   if (!video) r.fail(toml::source_region{}, "missing table [video] (its 'scene' key is required)");
   r.check_keys(*video, "[video]",
@@ -74,10 +74,13 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root, Timel
 
   const toml::node& scene_node = r.require(*video, "scene", "[video]");
   tl.scene = r.string(scene_node, "video.scene");
-  const SceneInfo* scene = find_scene(tl.scene);
+  const SceneInfo* scene = nullptr;
+  std::vector<std::string> names;
+  for (const SceneInfo& s : scenes) {
+    names.push_back(s.name);
+    if (s.name == tl.scene) scene = &s;
+  }
   if (!scene) {
-    std::vector<std::string> names;
-    for (const SceneInfo& s : all_scenes()) names.push_back(s.name);
     std::string hint = did_you_mean(tl.scene, names);
     r.fail(scene_node, "unknown scene '" + tl.scene + "'" +
                            (hint.empty() ? " (known scenes: " + join(names, ", ") + ")" : hint));
@@ -132,6 +135,8 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");
     if (tl.out_dir.empty()) r.fail(*n, "output.dir must not be empty");
+    if (std::string problem = check_path_text("output.dir", tl.out_dir); !problem.empty())
+      r.fail(*n, problem);
   }
   if (const toml::node* n = output->get("frames")) {
     const toml::array& formats = r.array(*n, "output.frames");

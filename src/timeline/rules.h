@@ -13,5 +13,10 @@ std::string check_resolution(int64_t width, int64_t height);
 std::string check_samples(int64_t samples);
 // yuv420p (h264) halves the chroma planes: width and height must be even.
 std::string check_codec_size(const std::string& codec, int64_t width, int64_t height);
+// output.video: a plain file name whose container (.mp4, .mkv or .mov) can hold `codec`.
+std::string check_video_name(const std::string& name, const std::string& codec);
+// A path or name from the timeline: no NUL or other control characters (the file system would cut
+// the name at a NUL and write somewhere else).
+std::string check_path_text(const std::string& key, const std::string& text);
 
 }  // namespace sdfreel

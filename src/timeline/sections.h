@@ -1,14 +1,17 @@
 #pragma once
 // The timeline parser, one function per top-level table. Each reads its table (which may be
 // absent: the defaults stay) into the Timeline and throws InputError on bad input.
+#include <vector>
+
 #include "scenes/scene.h"
 #include "timeline/timeline.h"
 #include "timeline/toml_reader.h"
 
 namespace sdfreel {
 
-// [video]; returns the scene it names (required).
-const SceneInfo& parse_video(const TomlReader& r, const toml::table& root, Timeline& tl);
+// [video]; returns the scene it names (required), one of `scenes`.
+const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
+                             const std::vector<SceneInfo>& scenes, Timeline& tl);
 void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_color(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_time(const TomlReader& r, const toml::table& root, Timeline& tl);

@@ -1,6 +1,6 @@
 #pragma once
-// SHA-256 (FIPS 180-4) of a byte string, for the timeline hash in manifests. Self-contained so
-// that the timeline library needs no libav.
+// SHA-256 of a byte string (libavutil's), for the timeline hash in manifests and the bench's
+// reference cache.
 #include <string>
 #include <string_view>
 

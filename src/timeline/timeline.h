@@ -3,6 +3,7 @@
 // errors are InputError with file:line:column.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,11 +33,19 @@ struct CameraKey {
   CameraPose pose;
 };
 
+struct CameraPathTables;  // curves and arc-length table built from the keys (camera_path.cpp)
+
 struct CameraPath {
   Interp interp = Interp::CatmullRom;
   bool constant_speed = false;        // speed = "constant": arc-length re-parameterisation
   std::vector<CameraKey> keys;        // empty: the scene's default camera
+  // Builds the curves and the arc-length table once (the parser calls it); call again after
+  // changing the fields. Without it, sample() builds them for every call.
+  void prepare();
   CameraPose sample(double t, const CameraPose& fallback) const;
+
+ private:
+  std::shared_ptr<const CameraPathTables> tables_;  // shared by copies: read-only
 };
 
 struct ParamTrack {
@@ -45,8 +54,8 @@ struct ParamTrack {
 };
 
 struct Timeline {
-  std::string path;     // as given on the command line
-  std::string sha256;   // of the file's bytes, lowercase hex
+  std::string path;    // as given on the command line
+  std::string sha256;  // of the file's bytes, lowercase hex
 
   // [video]
   std::string scene;
@@ -58,10 +67,10 @@ struct Timeline {
   uint64_t seed = 1;
 
   // [output]
-  std::string out_dir;                  // default: output/<timeline file stem>
+  std::string out_dir;  // default: output/<timeline file stem>
   bool write_exr = true, write_png = true;
-  std::string video;                    // "" = no video
-  std::string codec = "h264";           // h264 | ffv1 | prores
+  std::string video;           // "" = no video
+  std::string codec = "h264";  // h264 | ffv1 | prores
   int crf = 18;
 
   // [color]
@@ -69,14 +78,16 @@ struct Timeline {
   std::string display = "sRGB";
   std::string view = "ACES 1.0 - SDR Video";
 
-  std::optional<Curve> time;            // TIME(t); empty = identity
+  std::optional<Curve> time;  // TIME(t); empty = identity
   CameraPath camera;
   std::vector<ParamTrack> params;
 
-  int frame_count() const;              // round(duration * fps)
-  double video_time(int frame) const;   // frame / fps
-  double scene_time(int frame) const;   // TIME at video_time(frame)
+  int frame_count() const;             // round(duration * fps)
+  double video_time(int frame) const;  // frame / fps
+  double scene_time(int frame) const;  // TIME at video_time(frame)
 };
+
+struct SceneInfo;
 
 // Hooks the parser needs from the rest of the program, so this library does not depend on OCIO.
 struct ColorChecker {
@@ -87,7 +98,13 @@ struct ColorChecker {
 };
 
 // Reads, parses and validates a timeline file. Throws InputError on any bad input (spec's list).
-Timeline load_timeline(const std::string& path, const ColorChecker* color);
+// `scenes`: the scenes a timeline may name (all_scenes() in the program), a hook like `color`, so
+// that this library does not link the scenes.
+Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                       const ColorChecker* color);
+// The same on the file's bytes already in memory (`path` names it in messages; fuzzing uses it).
+Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
+                        const std::string& text, const ColorChecker* color);
 
 // Validates a timeline after command-line overrides (resolution, samples, codec size rules).
 // Throws InputError with the timeline path (line/column 0).

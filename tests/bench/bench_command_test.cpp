@@ -9,42 +9,19 @@
 #include <sstream>
 
 #include "bench/csv.h"
+#include "support/run.h"
+#include "support/scratch.h"
 
 namespace sdfreel::bench {
 namespace {
 
-struct RunResult {
-  int status;
-  std::string out;
-};
-
-RunResult run(const std::string& args) {
-  const std::string cmd = std::string(SDFREEL_BINARY) + " " + args + " 2>/dev/null";
-  RunResult r{-1, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int s = pclose(p);
-  r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  return r;
-}
-
-std::string scratch() {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("sdfreel_bench_cmd_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
 TEST(BenchCommand, WritesTableCsvPlotAndReusesTheReference) {
-  const std::string dir = scratch();
+  const std::string dir = test::scratch_dir("bench-command");
   const std::string args =
       "bench sdf_morph --resolution 16x9 --frames 0 --presets-only "
       "--repetitions 1 --out " +
       dir;
-  const RunResult r = run(args);
+  const test::RunResult r = test::run_sdfreel(args);
   ASSERT_EQ(r.status, 0) << r.out;
   for (const char* preset : {"**naive**", "**draft**", "**final**"})
     EXPECT_NE(r.out.find(preset), std::string::npos) << r.out;
@@ -70,18 +47,18 @@ TEST(BenchCommand, WritesTableCsvPlotAndReusesTheReference) {
   EXPECT_TRUE(std::filesystem::exists(folder / "00000.png"));
   EXPECT_TRUE(std::filesystem::exists(folder / "00000.mask.png"));
   const auto stamp = std::filesystem::last_write_time(folder / "00000.png");
-  ASSERT_EQ(run(args).status, 0);
+  ASSERT_EQ(test::run_sdfreel(args).status, 0);
   EXPECT_EQ(count(), 1);
   EXPECT_EQ(std::filesystem::last_write_time(folder / "00000.png"), stamp);
   std::filesystem::remove_all(dir);
 }
 
 TEST(BenchCommand, BadUsageExitsWithTwo) {
-  const std::string dir = scratch();
-  EXPECT_EQ(run("bench no_such_scene --out " + dir).status, 2);
-  EXPECT_EQ(run("bench sdf_morph --resolution 16by9 --out " + dir).status, 2);
-  EXPECT_EQ(run("bench sdf_morph --frames 999999 --out " + dir).status, 2);
-  EXPECT_EQ(run("bench --out " + dir).status, 2);
+  const std::string dir = test::scratch_dir("bench-command");
+  EXPECT_EQ(test::run_sdfreel("bench no_such_scene --out " + dir).status, 2);
+  EXPECT_EQ(test::run_sdfreel("bench sdf_morph --resolution 16by9 --out " + dir).status, 2);
+  EXPECT_EQ(test::run_sdfreel("bench sdf_morph --frames 999999 --out " + dir).status, 2);
+  EXPECT_EQ(test::run_sdfreel("bench --out " + dir).status, 2);
   std::filesystem::remove_all(dir);
 }
 

@@ -53,9 +53,9 @@ std::vector<BadCase> bad_cases() {
 
 TEST(BadInput, ExitsTwoWithLocationAndWritesNothing) {
   for (const BadCase& c : bad_cases()) {
-    const std::string dir = make_scratch_dir(std::string("bad-") + c.name);
+    const std::string dir = scratch_dir(std::string("bad-") + c.name);
     write_file(dir + "/t.toml", c.timeline);
-    const RunResult r = sdfreel(std::string("render t.toml ") + c.args, dir);
+    const RunResult r = run_sdfreel(std::string("render t.toml ") + c.args, dir);
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
     EXPECT_TRUE(std::regex_search(r.err, std::regex("^t\\.toml:([0-9]+:[0-9]+:)? error: ")))
         << c.name << ": " << r.err;
@@ -70,19 +70,19 @@ TEST(BadInput, ExitsTwoWithLocationAndWritesNothing) {
 }
 
 TEST(BadInput, NonUtf8AndHugeFilesAreRefused) {
-  const std::string dir = make_scratch_dir("bad-bytes");
+  const std::string dir = scratch_dir("bad-bytes");
   write_file(dir + "/t.toml", small_timeline(2) + "# \xff\xfe\n");
-  EXPECT_EQ(sdfreel("render t.toml", dir).status, 2);
+  EXPECT_EQ(run_sdfreel("render t.toml", dir).status, 2);
   write_file(dir + "/big.toml", small_timeline(2) + std::string(17 << 20, '#'));
-  EXPECT_EQ(sdfreel("render big.toml", dir).status, 2);
+  EXPECT_EQ(run_sdfreel("render big.toml", dir).status, 2);
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
 TEST(BadInput, UnknownCommandLineOptionsExitTwo) {
-  EXPECT_EQ(sdfreel("render").status, 2);
-  EXPECT_EQ(sdfreel("render x.toml --bogus").status, 2);
-  EXPECT_EQ(sdfreel("frobnicate").status, 2);
-  EXPECT_EQ(sdfreel("scenes no_such_scene").status, 2);
+  EXPECT_EQ(run_sdfreel("render").status, 2);
+  EXPECT_EQ(run_sdfreel("render x.toml --bogus").status, 2);
+  EXPECT_EQ(run_sdfreel("frobnicate").status, 2);
+  EXPECT_EQ(run_sdfreel("scenes no_such_scene").status, 2);
 }
 
 }  // namespace

@@ -1,51 +1,76 @@
-// Golden hashes: small renders must reproduce the committed frames.framemd5 bit for bit.
-// After an intended change of the picture: scripts/regen-golden.sh, look at the frames, commit.
+// Golden hashes, found by data: every tests/golden/<scene>/<name>.toml must reproduce its committed
+// hashes bit for bit on every backend. The CPU backend is held to <name>.framemd5; the OSMesa
+// backend to <name>.osmesa.framemd5 where the backends differ, else to the CPU's file (the GLSL
+// twin renders the same bits). After an intended change of the picture: scripts/regen-golden.sh,
+// look at the frames, commit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli/harness.h"
 
 namespace sdfreel::test {
 namespace {
 
-// Renders tests/golden/NAME.toml with `backend` and compares with the committed hashes of
-// `golden_backend` (NAME.framemd5 for cpu, NAME.<backend>.framemd5 otherwise): a backend that is
-// bit-identical to the CPU backend is held to the CPU's file.
-void check_golden(const std::string& name, const std::string& backend,
-                  const std::string& golden_backend) {
-  const std::string dir = make_scratch_dir("golden-" + name + "-" + backend);
-  std::filesystem::copy_file(source_path("tests/golden/" + name + ".toml"), dir + "/t.toml");
-  const RunResult r = sdfreel("render t.toml --backend " + backend, dir);
+namespace fs = std::filesystem;
+
+struct Golden {
+  std::string scene, name;  // tests/golden/<scene>/<name>.toml
+  std::string path(const std::string& ext) const {
+    return source_path("tests/golden/" + scene + "/" + name + ext);
+  }
+};
+
+std::vector<Golden> goldens() {
+  std::vector<Golden> all;
+  for (const auto& dir : fs::directory_iterator(source_path("tests/golden"))) {
+    if (!dir.is_directory()) continue;
+    for (const auto& f : fs::directory_iterator(dir.path()))
+      if (f.path().extension() == ".toml")
+        all.push_back({dir.path().filename().string(), f.path().stem().string()});
+  }
+  std::sort(all.begin(), all.end(), [](const Golden& a, const Golden& b) {
+    return std::tie(a.scene, a.name) < std::tie(b.scene, b.name);
+  });
+  return all;
+}
+
+class GoldenFrames : public ::testing::TestWithParam<std::tuple<Golden, std::string>> {};
+
+TEST_P(GoldenFrames, MatchCommittedHashes) {
+  const Golden& g = std::get<0>(GetParam());
+  const std::string& backend = std::get<1>(GetParam());
+  const std::string dir = scratch_dir("golden-" + g.scene + "-" + g.name + "-" + backend);
+  fs::copy_file(g.path(".toml"), dir + "/t.toml");
+  const RunResult r = run_sdfreel("render t.toml --backend " + backend, dir);
   // A machine (or build) without OSMesa cannot run the osmesa backend at all: nothing to compare.
   if (r.status != 0 && (r.err.find("cannot start the osmesa backend") != std::string::npos ||
                         r.err.find("osmesa backend is not built") != std::string::npos))
     GTEST_SKIP() << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string suffix = golden_backend == "cpu" ? "" : "." + golden_backend;
-  const std::string want = read_file(source_path("tests/golden/" + name + suffix + ".framemd5"));
-  ASSERT_FALSE(want.empty()) << "no committed golden file; run scripts/regen-golden.sh";
+  const std::string own = g.path("." + backend + ".framemd5");
+  const std::string file = backend != "cpu" && fs::exists(own) ? own : g.path(".framemd5");
+  const std::string want = read_file(file);
+  ASSERT_FALSE(want.empty()) << "no committed golden file " << file
+                             << "; run scripts/regen-golden.sh";
   EXPECT_EQ(framemd5_data_lines(read_file(dir + "/out/frames.framemd5")), framemd5_data_lines(want))
-      << "frames differ from the golden hashes; if the change is intended, run "
-         "scripts/regen-golden.sh and look at the frames before committing";
+      << "frames differ from " << file << "; if the change is intended, run "
+      << "scripts/regen-golden.sh and look at the frames before committing";
 }
 
-void check_golden(const std::string& name, const std::string& backend) {
-  check_golden(name, backend, backend);
+std::string golden_name(const ::testing::TestParamInfo<std::tuple<Golden, std::string>>& i) {
+  const Golden& g = std::get<0>(i.param);
+  return g.scene + "_" + g.name + "_" + std::get<1>(i.param);
 }
 
-TEST(Golden, SdfMorphCpu) {
-  check_golden("sdf_morph_small", "cpu");
-}
-
-TEST(Golden, LanternFestivalCpu) {
-  check_golden("lantern_festival_small", "cpu");
-}
-
-// The GLSL twin renders the same bits as the C++ scene: held to the CPU backend's hashes.
-TEST(Golden, LanternFestivalOsmesaMatchesCpuHashes) {
-  check_golden("lantern_festival_small", "osmesa", "cpu");
-}
+INSTANTIATE_TEST_SUITE_P(Golden, GoldenFrames,
+                         ::testing::Combine(::testing::ValuesIn(goldens()),
+                                            ::testing::Values("cpu", "osmesa")),
+                         golden_name);
 
 }  // namespace
 }  // namespace sdfreel::test

@@ -8,9 +8,9 @@ namespace {
 
 TEST(H264, StreamCarriesBt709TagsAndTvRange) {
   if (!have_tool("ffprobe")) GTEST_SKIP() << "ffprobe not installed";
-  const std::string dir = make_scratch_dir("h264-tags");
+  const std::string dir = scratch_dir("h264-tags");
   write_file(dir + "/t.toml", small_timeline(3, "h264", "v.mp4"));
-  ASSERT_EQ(sdfreel("render t.toml", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml", dir).status, 0);
   const RunResult p = run("ffprobe -v error -show_streams out/v.mp4", dir);
   ASSERT_EQ(p.status, 0) << p.err;
   for (const char* want :

@@ -1,62 +1,9 @@
 #include "cli/harness.h"
 
-#include <sys/wait.h>
-
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace sdfreel::test {
-
-namespace fs = std::filesystem;
-
-RunResult run(const std::string& command, const std::string& cwd) {
-  const fs::path dir = fs::temp_directory_path() / "sdfreel-test-io";
-  fs::create_directories(dir);
-  static int counter = 0;
-  const std::string id = std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  const std::string out = (dir / ("out-" + id)).string(), err = (dir / ("err-" + id)).string();
-  // Braces: the whole command (even one with `&` or `;`) runs in `cwd` with both streams captured.
-  const std::string full =
-      "cd '" + cwd + "' && { " + command + "\n} >'" + out + "' 2>'" + err + "'";
-  const int raw = std::system(full.c_str());
-  RunResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-RunResult sdfreel(const std::string& args, const std::string& cwd) {
-  return run(std::string("'") + SDFREEL_BINARY + "' " + args, cwd);
-}
-
-bool have_tool(const std::string& name) {
-  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
-}
-
-std::string make_scratch_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sdfreel-test-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p.string();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::string> framemd5_data_lines(const std::string& text) {
   std::vector<std::string> lines;
@@ -65,10 +12,6 @@ std::vector<std::string> framemd5_data_lines(const std::string& text) {
   while (std::getline(ss, line))
     if (!line.empty() && line[0] != '#') lines.push_back(line);
   return lines;
-}
-
-std::string source_path(const std::string& rel) {
-  return std::string(SDFREEL_SOURCE_DIR) + "/" + rel;
 }
 
 std::string small_timeline(int frames, const std::string& codec, const std::string& video,

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/harness.h"
+#include "io/manifest.h"
 
 namespace sdfreel::test {
 namespace {
@@ -12,9 +13,9 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Render, WritesFramesManifestFramemd5AndVideo) {
-  const std::string dir = make_scratch_dir("render-basic");
+  const std::string dir = scratch_dir("render-basic");
   write_file(dir + "/t.toml", small_timeline(4));
-  const RunResult r = sdfreel("render t.toml", dir);
+  const RunResult r = run_sdfreel("render t.toml", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   for (int i = 0; i < 4; ++i) {
     char name[32];
@@ -37,9 +38,9 @@ TEST(Render, WritesFramesManifestFramemd5AndVideo) {
 
 TEST(Render, Framemd5MatchesStockFfmpegOnPngsAndOnFfv1Video) {
   if (!have_tool("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
-  const std::string dir = make_scratch_dir("render-ffmpeg");
+  const std::string dir = scratch_dir("render-ffmpeg");
   write_file(dir + "/t.toml", small_timeline(3));
-  ASSERT_EQ(sdfreel("render t.toml", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml", dir).status, 0);
   const auto ours = framemd5_data_lines(read_file(dir + "/out/frames.framemd5"));
   const RunResult png =
       run("ffmpeg -v error -i out/frames/%05d.png -pix_fmt rgb48le -fflags +bitexact -f framemd5 -",
@@ -55,10 +56,11 @@ TEST(Render, Framemd5MatchesStockFfmpegOnPngsAndOnFfv1Video) {
 TEST(Render, SameHashesForOneTwoAndFourThreads) {
   std::vector<std::string> results;
   for (int threads : {1, 2, 4}) {
-    const std::string dir = make_scratch_dir("render-threads-" + std::to_string(threads));
+    const std::string dir = scratch_dir("render-threads-" + std::to_string(threads));
     write_file(dir + "/t.toml", small_timeline(3));
-    ASSERT_EQ(sdfreel("render t.toml --no-video --threads " + std::to_string(threads), dir).status,
-              0);
+    ASSERT_EQ(
+        run_sdfreel("render t.toml --no-video --threads " + std::to_string(threads), dir).status,
+        0);
     results.push_back(read_file(dir + "/out/frames.framemd5"));
   }
   EXPECT_EQ(results[0], results[1]);
@@ -66,17 +68,17 @@ TEST(Render, SameHashesForOneTwoAndFourThreads) {
 }
 
 TEST(Render, ResumeAfterPartialRenderEqualsFullRender) {
-  const std::string full = make_scratch_dir("render-full");
+  const std::string full = scratch_dir("render-full");
   write_file(full + "/t.toml", small_timeline(6));
-  ASSERT_EQ(sdfreel("render t.toml", full).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml", full).status, 0);
 
-  const std::string part = make_scratch_dir("render-resume");
+  const std::string part = scratch_dir("render-resume");
   write_file(part + "/t.toml", small_timeline(6));
-  ASSERT_EQ(sdfreel("render t.toml --frames 0-2", part).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --frames 0-2", part).status, 0);
   EXPECT_FALSE(fs::exists(part + "/out/small.mkv"));  // partial range: no video
   // A damaged frame on disk must be rendered again, not kept.
   write_file(part + "/out/frames/00001.png", "not a png");
-  const RunResult r = sdfreel("render t.toml --resume", part);
+  const RunResult r = run_sdfreel("render t.toml --resume", part);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("kept"), std::string::npos);
   EXPECT_EQ(read_file(part + "/out/frames.framemd5"), read_file(full + "/out/frames.framemd5"));
@@ -85,55 +87,57 @@ TEST(Render, ResumeAfterPartialRenderEqualsFullRender) {
 }
 
 TEST(Render, ShardsThenEncodeEqualOneRender) {
-  const std::string full = make_scratch_dir("render-one");
+  const std::string full = scratch_dir("render-one");
   write_file(full + "/t.toml", small_timeline(5));
-  ASSERT_EQ(sdfreel("render t.toml", full).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml", full).status, 0);
 
-  const std::string sharded = make_scratch_dir("render-shards");
+  const std::string sharded = scratch_dir("render-shards");
   write_file(sharded + "/t.toml", small_timeline(5));
-  ASSERT_EQ(sdfreel("render t.toml --shard 1/2", sharded).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --shard 1/2", sharded).status, 0);
   // Encoding with a frame missing fails (exit 1) and names it.
-  const RunResult early = sdfreel("encode out -o early.mkv --codec ffv1", sharded);
+  const RunResult early = run_sdfreel("encode out -o early.mkv --codec ffv1", sharded);
   EXPECT_EQ(early.status, 1);
   EXPECT_NE(early.err.find("frame 0 "), std::string::npos) << early.err;
-  ASSERT_EQ(sdfreel("render t.toml --shard 0/2", sharded).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --shard 0/2", sharded).status, 0);
   EXPECT_EQ(read_file(sharded + "/out/frames.framemd5"), read_file(full + "/out/frames.framemd5"));
-  const RunResult enc = sdfreel("encode out -o joined.mkv --codec ffv1", sharded);
+  const RunResult enc = run_sdfreel("encode out -o joined.mkv --codec ffv1", sharded);
   ASSERT_EQ(enc.status, 0) << enc.err;
   EXPECT_EQ(read_file(sharded + "/joined.mkv"), read_file(full + "/out/small.mkv"));
 }
 
 TEST(Render, EncodeRefusesAFrameThatDiffersFromTheManifest) {
-  const std::string dir = make_scratch_dir("render-tamper");
+  const std::string dir = scratch_dir("render-tamper");
   write_file(dir + "/t.toml", small_timeline(2));
-  ASSERT_EQ(sdfreel("render t.toml --no-video", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
   fs::copy_file(dir + "/out/frames/00000.png", dir + "/out/frames/00001.png",
                 fs::copy_options::overwrite_existing);
-  const RunResult r = sdfreel("encode out -o v.mkv --codec ffv1", dir);
+  const RunResult r = run_sdfreel("encode out -o v.mkv --codec ffv1", dir);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("frame 1"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/v.mkv"));
 }
 
 TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
-  const std::string dir = make_scratch_dir("render-kill");
+  const std::string dir = scratch_dir("render-kill");
   write_file(dir + "/t.toml", small_timeline(120));
-  // SIGKILL the render as soon as the manifest lists three frames: mid-run however fast the machine.
+  // SIGKILL the render as soon as three frames are listed (manifest.journal holds the frames
+  // finished since manifest.json was last rebuilt): mid-run however fast the machine.
   const RunResult killed = run(
       "'" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video & pid=$!; " +
-      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.json 2>/dev/null); " +
+      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.journal 2>/dev/null); " +
       "[ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
       dir);
   EXPECT_EQ(killed.out, "137\n") << "the render was not killed: " << killed.err;
-  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
-  ASSERT_LT(m["frames"].size(), 120u) << "render finished before the kill";
-  ASSERT_GE(m["frames"].size(), 3u);
+  const auto m = read_manifest(dir + "/out/manifest.json");
+  ASSERT_TRUE(m);
+  ASSERT_LT(m->frames.size(), 120u) << "render finished before the kill";
+  ASSERT_GE(m->frames.size(), 3u);
   // Every listed frame is on disk, complete and matches its hash; the resume finishes the job.
-  const RunResult r = sdfreel("render t.toml --no-video --resume", dir);
+  const RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   size_t kept = 0;
   for (size_t pos = 0; (pos = r.err.find("kept", pos)) != std::string::npos; ++pos) ++kept;
-  EXPECT_EQ(kept, m["frames"].size());
+  EXPECT_EQ(kept, m->frames.size());
   for (const auto& entry : fs::directory_iterator(dir + "/out/frames")) {
     const std::string name = entry.path().filename().string();
     EXPECT_EQ(name.find("tmp"), std::string::npos) << "temporary file left: " << name;
@@ -141,26 +145,26 @@ TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
 }
 
 TEST(Still, WritesOnePngAndOneExr) {
-  const std::string dir = make_scratch_dir("still");
+  const std::string dir = scratch_dir("still");
   write_file(dir + "/t.toml", small_timeline(4));
-  ASSERT_EQ(sdfreel("still t.toml --time 0.25 -o a.png", dir).status, 0);
-  ASSERT_EQ(sdfreel("still t.toml --time 0.25 -o a.exr", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("still t.toml --time 0.25 -o a.png", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("still t.toml --time 0.25 -o a.exr", dir).status, 0);
   EXPECT_GT(fs::file_size(dir + "/a.png"), 100u);
   EXPECT_GT(fs::file_size(dir + "/a.exr"), 100u);
-  EXPECT_EQ(sdfreel("still t.toml --time 0.25 -o a.jpg", dir).status, 2);
+  EXPECT_EQ(run_sdfreel("still t.toml --time 0.25 -o a.jpg", dir).status, 2);
 }
 
 TEST(Verify, PassesOnItsOwnRenderAndFailsOnADifferentFrame) {
-  const std::string dir = make_scratch_dir("verify");
+  const std::string dir = scratch_dir("verify");
   write_file(dir + "/t.toml", small_timeline(3));
-  ASSERT_EQ(sdfreel("render t.toml --no-video", dir).status, 0);
-  const RunResult ok = sdfreel("verify t.toml --manifest out/manifest.json", dir);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  const RunResult ok = run_sdfreel("verify t.toml --manifest out/manifest.json", dir);
   EXPECT_EQ(ok.status, 0) << ok.err;
   // Swap two frames' hashes in the manifest: verify must name frame 0 and write a diff image.
   auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
   std::swap(m["frames"][0]["display_md5"], m["frames"][1]["display_md5"]);
   write_file(dir + "/out/manifest.json", m.dump(2));
-  const RunResult bad = sdfreel("verify t.toml --manifest out/manifest.json", dir);
+  const RunResult bad = run_sdfreel("verify t.toml --manifest out/manifest.json", dir);
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.err.find("frame 0 differs"), std::string::npos) << bad.err;
   EXPECT_TRUE(fs::exists(dir + "/out/verify-00000-diff.png"));

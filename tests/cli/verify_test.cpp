@@ -13,9 +13,9 @@ namespace fs = std::filesystem;
 
 // Renders three small frames into DIR/out once per test.
 std::string rendered(const std::string& name) {
-  const std::string dir = make_scratch_dir(name);
+  const std::string dir = scratch_dir(name);
   write_file(dir + "/t.toml", small_timeline(3));
-  EXPECT_EQ(sdfreel("render t.toml --no-video", dir).status, 0);
+  EXPECT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
   return dir;
 }
 
@@ -37,7 +37,7 @@ std::string with_hash_changed(const std::string& framemd5, int line) {
 
 TEST(VerifyFramemd5, AcceptsTheFramemd5SdfreelWrote) {
   const std::string dir = rendered("verify-own-framemd5");
-  const RunResult r = sdfreel("verify t.toml --manifest out/frames.framemd5", dir);
+  const RunResult r = run_sdfreel("verify t.toml --manifest out/frames.framemd5", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("verified 3 frames"), std::string::npos) << r.err;
 }
@@ -50,13 +50,13 @@ TEST(VerifyFramemd5, AcceptsAFramemd5OfStockFfmpegFromThePngs) {
           "golden.framemd5",
           dir);
   ASSERT_EQ(ff.status, 0) << ff.err;
-  const RunResult r = sdfreel("verify t.toml --manifest golden.framemd5", dir);
+  const RunResult r = run_sdfreel("verify t.toml --manifest golden.framemd5", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("verified 3 frames"), std::string::npos) << r.err;
 
   // The same file with frame 1's hash changed must fail on frame 1.
   write_file(dir + "/bad.framemd5", with_hash_changed(read_file(dir + "/golden.framemd5"), 1));
-  const RunResult bad = sdfreel("verify t.toml --manifest bad.framemd5", dir);
+  const RunResult bad = run_sdfreel("verify t.toml --manifest bad.framemd5", dir);
   EXPECT_EQ(bad.status, 1) << bad.err;
   EXPECT_NE(bad.err.find("frame 1 differs"), std::string::npos) << bad.err;
 }
@@ -64,7 +64,7 @@ TEST(VerifyFramemd5, AcceptsAFramemd5OfStockFfmpegFromThePngs) {
 TEST(VerifyFramemd5, AFramemd5OfAnotherResolutionFailsAndSaysSo) {
   const std::string dir = rendered("verify-framemd5-size");
   const RunResult r =
-      sdfreel("verify t.toml --manifest out/frames.framemd5 --resolution 32x18", dir);
+      run_sdfreel("verify t.toml --manifest out/frames.framemd5 --resolution 32x18", dir);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("another resolution"), std::string::npos) << r.err;
 }
@@ -87,14 +87,14 @@ TEST(VerifyFramemd5, NeitherManifestNorFramemd5IsBadInputAndWritesNothing) {
   };
   for (const auto& c : cases) {
     write_file(dir + "/" + c.name, c.text);
-    const RunResult r = sdfreel(std::string("verify t.toml --manifest ") + c.name, dir);
+    const RunResult r = run_sdfreel(std::string("verify t.toml --manifest ") + c.name, dir);
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.name << ": " << r.err;
     EXPECT_EQ(r.err.find("json.exception"), std::string::npos) << c.name << ": " << r.err;
   }
-  const RunResult missing = sdfreel("verify t.toml --manifest nowhere.framemd5", dir);
+  const RunResult missing = run_sdfreel("verify t.toml --manifest nowhere.framemd5", dir);
   EXPECT_EQ(missing.status, 2) << missing.err;
-  const RunResult folder = sdfreel("verify t.toml --manifest out", dir);
+  const RunResult folder = run_sdfreel("verify t.toml --manifest out", dir);
   EXPECT_EQ(folder.status, 2) << folder.err;
   for (const auto& e : fs::directory_iterator(dir + "/out"))
     EXPECT_EQ(e.path().filename().string().rfind("verify-", 0), std::string::npos) << e.path();

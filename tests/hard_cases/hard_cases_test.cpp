@@ -1,5 +1,5 @@
-// The hard cases (tests/hard_cases/*.toml): timelines aimed at one known failure each of ray
-// marching (grazing rays, eyes inside or under surfaces, huge TIME, far-away cameras, extreme
+// The hard cases (tests/hard_cases/<scene>/*.toml): timelines aimed at one known failure each of
+// ray marching (grazing rays, eyes inside or under surfaces, huge TIME, far-away cameras, extreme
 // fields of view and sizes, degenerate camera paths and operators). Each is rendered at its
 // preset (final, 2 samples) on the CPU backend and must give finite pixels, no ray that ran out
 // of steps, and an error against its own reference (the reference preset at the same samples,
@@ -12,9 +12,9 @@
 //   inside_lantern         sphereTrace: d < 0 at the start is a hit at once
 //   inside_object          sdf_morph march: the same
 //   look_straight_up/down  make_camera_basis: +Z as the reference up (render/camera.cpp)
-//   time_1e6, time_1e9     make_lake_frame: wave phases wrapped in double (lantern_festival_lake)
+//   time_1e6, time_1e9     make_lake_frame: wave phases wrapped in double (lantern_festival/lake)
 //   far_camera_lake        boundInterval: the circle test from the closest approach
-//   far_camera_object      intersectSphere: r^2 - |q|^2 instead of b^2 - c (sdf_morph_render)
+//   far_camera_object      intersectSphere: r^2 - |q|^2 instead of b^2 - c (sdf_morph/render)
 //   fov_narrow, fov_wide,  footprint_angle: epsilons in pixel footprints, the footprint capped at
 //     resolution_1x1,      MAX_FOOTPRINT_ANGLE (render/quality.h); before the cap fov_wide
 //     resolution_3x5       failed (26 dB against its reference) and resolution_1x1 had 31.5 dB
@@ -22,7 +22,7 @@
 //   smooth_union_k0        opSmoothUnion: k <= 0 is the plain union (sdf/sdf.h)
 //   flicker_zero           candleStrength: blends, never divides by the strength
 //   ray_along_lantern_axis boundInterval: a vertical ray is inside or outside as a whole
-//   cell_centre_rays       neighbourSign: sign(0) = +1 (lantern_festival_grid.h)
+//   cell_centre_rays       neighbourSign: sign(0) = +1 (lantern_festival/grid.h)
 //   crease_normals         safe_normalize: a tetrahedron normal whose taps cancel (sdf/sdf.h)
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@
 
 #include "backends/cpu/cpu_backend.h"
 #include "bench/metrics.h"
-#include "cli/frame_pipeline.h"
+#include "pipeline/frame_pipeline.h"
 #include "scenes/registry.h"
 #include "sdf/sdf.h"
 #include "timeline/timeline.h"
@@ -58,10 +58,15 @@ std::string case_dir() {
   return std::string(SDFREEL_SOURCE_DIR) + "/tests/hard_cases";
 }
 
+// "<scene>/<case>" for every tests/hard_cases/<scene>/<case>.toml.
 std::vector<std::string> case_names() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(case_dir()))
-    if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  for (const auto& scene : fs::directory_iterator(case_dir())) {
+    if (!scene.is_directory()) continue;
+    for (const auto& e : fs::directory_iterator(scene.path()))
+      if (e.path().extension() == ".toml")
+        names.push_back(scene.path().filename().string() + "/" + e.path().stem().string());
+  }
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -92,7 +97,7 @@ const CaseRender& render_case(const std::string& name) {
   auto it = cache.find(name);
   if (it != cache.end()) return it->second;
   CaseRender r;
-  r.tl = load_timeline(case_dir() + "/" + name + ".toml", nullptr);
+  r.tl = load_timeline(all_scenes(), case_dir() + "/" + name + ".toml", nullptr);
   FramePipeline pipe(r.tl, std::make_unique<CpuBackend>(0));
   bench::ErrorAccumulator error;
   for (int i = 0; i < r.tl.frame_count(); ++i) {
@@ -115,6 +120,7 @@ TEST_P(HardCase, FiniteUncappedAndWithinBudget) {
   const std::string name = GetParam();
   const CaseRender& r = render_case(name);
   ASSERT_GT(r.linear.size(), 0u);
+  EXPECT_EQ(r.tl.scene + "/", name.substr(0, r.tl.scene.size() + 1)) << "in another scene's folder";
   for (const ImageRGBA& img : r.linear) EXPECT_TRUE(all_finite(img)) << name;
   EXPECT_EQ(r.stats.capped, 0u) << name << ": rays ran out of steps";
   EXPECT_GE(r.error.psnr_db, FINAL_MIN_PSNR_DB) << name;
@@ -127,7 +133,9 @@ TEST_P(HardCase, FiniteUncappedAndWithinBudget) {
 
 INSTANTIATE_TEST_SUITE_P(Timelines, HardCase, testing::ValuesIn(case_names()),
                          [](const testing::TestParamInfo<std::string>& info) {
-                           return info.param;
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '/', '_');
+                           return name;
                          });
 
 TEST(HardCases, SuiteIsComplete) {
@@ -156,12 +164,12 @@ std::vector<double> frame_steps(const CaseRender& r) {
 }
 
 TEST(HardCases, HugeTimeMovesAsSmoothlyAsSmallTime) {
-  const std::vector<double> base = frame_steps(render_case("time_10"));
+  const std::vector<double> base = frame_steps(render_case("lantern_festival/time_10"));
   ASSERT_GE(base.size(), 2u);
   double base_mean = 0.0;
   for (double s : base) base_mean += s / double(base.size());
   ASSERT_GT(base_mean, 0.0) << "the TIME = 10 case shows no motion: it tests nothing";
-  for (const char* name : {"time_1e6", "time_1e9"}) {
+  for (const char* name : {"lantern_festival/time_1e6", "lantern_festival/time_1e9"}) {
     const std::vector<double> steps = frame_steps(render_case(name));
     ASSERT_EQ(steps.size(), base.size());
     for (double s : steps) {

@@ -114,24 +114,5 @@ TEST(LinearHalfHash, SeesHalfPrecisionChangesOnly) {
   EXPECT_EQ(linear_half_hash(a).size(), 32u);
 }
 
-TEST(Sha256, KnownVectors) {
-  // FIPS 180-2 examples.
-  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
-            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-}
-
-TEST(Sha256, FileMatchesString) {
-  TempDir dir;
-  std::string big(200000, '\0');  // several read chunks, with zero bytes
-  for (size_t i = 0; i < big.size(); ++i) big[i] = char(i * 31 % 251);
-  write_text_atomic(dir.file("big.bin"), big);
-  write_text_atomic(dir.file("abc.txt"), "abc");
-  EXPECT_EQ(sha256_file(dir.file("big.bin")), sha256_hex(big));
-  EXPECT_EQ(sha256_file(dir.file("abc.txt")), sha256_hex("abc"));
-  EXPECT_THROW(sha256_file(dir.file("missing")), std::runtime_error);
-}
-
 }  // namespace
 }  // namespace sdfreel

@@ -1,5 +1,6 @@
 // The CPU backend's two paths give the same bits: eight-lane packets (Scene::radiance_packet) and
-// one ray at a time (Scene::radiance), for every scene, preset and debug mode, with partial
+// one ray at a time (Scene::radiance), for every registered scene (from its test poses, SceneInfo),
+// preset and debug mode, with partial
 // packets (odd sizes, sample counts that are not multiples of eight), for any thread count and
 // tile size. The ray statistics the bench reports must match too.
 #include <gtest/gtest.h>
@@ -22,46 +23,6 @@ struct Case {
   bool naive = false;
   bool hit_mask = false;
 };
-
-// Camera poses: the scene's own, one looking down steeply, one grazing the horizon.
-std::vector<CameraPose> poses(const SceneInfo& info) {
-  std::vector<CameraPose> out{info.default_camera};
-  CameraPose down = info.default_camera;
-  down.target = down.position + glm::dvec3(0.3, -2.0, 1.0);
-  out.push_back(down);
-  CameraPose flat = info.default_camera;
-  flat.target = flat.position + glm::dvec3(1.0, -0.02, 0.4);
-  flat.fov_deg = 20.0;
-  out.push_back(flat);
-  if (info.name == "sdf_morph") {
-    // Close-ups: the object fills the frame (relaxed marches, reflections of the pedestal and of
-    // the mug's inside), and the pedestal's foot with the object's shadow on the floor.
-    CameraPose close = info.default_camera;
-    close.position = close.target + (close.position - close.target) * 0.35;
-    close.fov_deg = 30.0;
-    out.push_back(close);
-    CameraPose foot = info.default_camera;
-    foot.position = glm::dvec3(-1.2, 0.5, -1.6);
-    foot.target = glm::dvec3(0.4, 0.1, 0.5);
-    out.push_back(foot);
-  }
-  if (info.name == "lantern_festival") {
-    // Level with the horizon (rays along the lake that graze the crests, long cell walks), from
-    // just above the water, and looking up (sky, reflections of nothing).
-    CameraPose level = info.default_camera;
-    level.target = level.position + glm::dvec3(1.0, 0.0, 0.35);
-    level.fov_deg = 35.0;
-    out.push_back(level);
-    CameraPose low = level;
-    low.position.y = -0.7;
-    low.target = low.position + glm::dvec3(-0.4, -0.01, 1.0);
-    out.push_back(low);
-    CameraPose up = info.default_camera;
-    up.target = up.position + glm::dvec3(0.2, 2.0, 0.5);
-    out.push_back(up);
-  }
-  return out;
-}
 
 FrameContext context(const SceneInfo& info, const Case& c, const CameraPose& pose, double time) {
   FrameContext ctx;
@@ -103,7 +64,7 @@ TEST_P(PacketPath, SameBitsAndStatsAsOneRayAtATime) {
   const Case& c = GetParam();
   const SceneInfo* info = find_scene(c.scene);
   ASSERT_NE(info, nullptr);
-  for (const CameraPose& pose : poses(*info))
+  for (const CameraPose& pose : test_camera_poses(*info))
     for (double time : {0.0, 3.7}) {
       const FrameContext ctx = context(*info, c, pose, time);
       const Frame scalar = render(*info, ctx, false);
@@ -127,7 +88,8 @@ TEST_P(PacketPath, IndependentOfThreadsAndTileSize) {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (const char* s : {"sdf_morph", "lantern_festival"}) {
+  for (const SceneInfo& info : all_scenes()) {
+    const std::string& s = info.name;
     out.push_back({s, Quality::Draft, 1});
     out.push_back({s, Quality::Final, 3});
     out.push_back({s, Quality::Final, 1, true});         // naive

@@ -1,6 +1,7 @@
 // One test per rule of docs/timeline.md "What is refused": the message and where it points.
 #include <gtest/gtest.h>
 
+#include "scenes/registry.h"
 #include "timeline/fixture.h"
 
 namespace sdfreel {
@@ -172,7 +173,8 @@ TEST_F(BadInput, UnknownDisplayOrView) {
   expect_error(video_with("[color]\ndisplay = \"sRGB\"\nview = \"Raw\""),
                "display 'sRGB' has no view 'Raw'", 5, 8, &color);
   // Without a checker the color names are not checked.
-  EXPECT_NO_THROW(load_timeline(write(video_with("[color]\ndisplay = \"P3\"")), nullptr));
+  EXPECT_NO_THROW(
+      load_timeline(all_scenes(), write(video_with("[color]\ndisplay = \"P3\"")), nullptr));
 }
 
 TEST_F(BadInput, OddSizeWithH264NamesTheNearestEvenSize) {
@@ -181,6 +183,7 @@ TEST_F(BadInput, OddSizeWithH264NamesTheNearestEvenSize) {
   expect_error(video_with("resolution = [64, 35]\n[output]\ncodec = \"h264\""), "use 64x36", 3, 14);
   // Other codecs take odd sizes.
   EXPECT_NO_THROW(load_timeline(
+      all_scenes(),
       write(video_with("resolution = [63, 35]\n[output]\nvideo = \"a.mkv\"\ncodec = \"ffv1\"")),
       nullptr));
 }
@@ -233,11 +236,11 @@ TEST_F(BadInput, LargerThan16MiB) {
   expect_error(text, "larger than 16 MiB", 0, 0);
   // Exactly 16 MiB is still read.
   text.pop_back();
-  EXPECT_NO_THROW(load_timeline(write(text), nullptr));
+  EXPECT_NO_THROW(load_timeline(all_scenes(), write(text), nullptr));
 }
 
 TEST_F(BadInput, MissingFile) {
-  EXPECT_THROW(load_timeline((dir_ / "absent.toml").string(), nullptr), InputError);
+  EXPECT_THROW(load_timeline(all_scenes(), (dir_ / "absent.toml").string(), nullptr), InputError);
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST_F(DocsExample, TheTimelinePageExampleParsesWithEveryTable) {
   const std::string& example = blocks.front();
   for (const char* table : {"[video]", "[output]", "[color]", "[time]", "[camera]", "[params]"})
     EXPECT_NE(example.find(table), std::string::npos) << "the example lacks " << table;
-  const Timeline tl = load_timeline(write(example), nullptr);
+  const Timeline tl = load_timeline(all_scenes(), write(example), nullptr);
   EXPECT_EQ(tl.scene, "lantern_festival");
   EXPECT_EQ(tl.fps.num, 30000);
   EXPECT_EQ(tl.fps.den, 1001);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "scenes/registry.h"
 #include "timeline/timeline.h"
 
 namespace sdfreel::testing {
@@ -34,7 +35,7 @@ class TimelineFiles : public ::testing::Test {
                     const ColorChecker* color = nullptr) {
     const std::string path = write(text);
     try {
-      load_timeline(path, color);
+      load_timeline(all_scenes(), path, color);
       ADD_FAILURE() << "no error for:\n" << text;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos)

@@ -1,6 +1,7 @@
 // load_timeline on good files: the spec's example (with a scene that exists), defaults, forms.
 #include <gtest/gtest.h>
 
+#include "scenes/registry.h"
 #include "timeline/fixture.h"
 #include "timeline/sha256.h"
 
@@ -66,7 +67,7 @@ class Parse : public TimelineFiles {};
 TEST_F(Parse, SpecExample) {
   RecordingChecker color;
   const std::string path = write(kSpecExample);
-  Timeline tl = load_timeline(path, &color);
+  Timeline tl = load_timeline(all_scenes(), path, &color);
   EXPECT_EQ(tl.path, path);
   EXPECT_EQ(tl.sha256, sha256_hex(kSpecExample));
   EXPECT_EQ(tl.scene, "sdf_morph");
@@ -121,7 +122,8 @@ TEST_F(Parse, SpecExample) {
 }
 
 TEST_F(Parse, MinimalFileTakesDefaults) {
-  Timeline tl = load_timeline(write("[video]\nscene = \"sdf_morph\"\n", "my_show.toml"), nullptr);
+  Timeline tl = load_timeline(all_scenes(),
+                              write("[video]\nscene = \"sdf_morph\"\n", "my_show.toml"), nullptr);
   EXPECT_EQ(tl.out_dir, "output/my_show");
   EXPECT_FALSE(tl.time);  // TIME = t
   EXPECT_EQ(tl.scene_time(45), tl.video_time(45));
@@ -135,7 +137,7 @@ TEST_F(Parse, MinimalFileTakesDefaults) {
 }
 
 TEST_F(Parse, RationalFpsAndRelativeDir) {
-  Timeline tl = load_timeline(write(R"([video]
+  Timeline tl = load_timeline(all_scenes(), write(R"([video]
 scene = "sdf_morph"
 fps = "30000/1001"
 duration = 10
@@ -155,16 +157,16 @@ codec = "ffv1"
 }
 
 TEST_F(Parse, RationalFpsIsReduced) {
-  Timeline tl = load_timeline(write(video_with("fps = \"60/2\"")), nullptr);
+  Timeline tl = load_timeline(all_scenes(), write(video_with("fps = \"60/2\"")), nullptr);
   EXPECT_EQ(tl.fps.num, 30);
   EXPECT_EQ(tl.fps.den, 1);
-  tl = load_timeline(write(video_with("fps = \"24\"")), nullptr);
+  tl = load_timeline(all_scenes(), write(video_with("fps = \"24\"")), nullptr);
   EXPECT_EQ(tl.fps.num, 24);
   EXPECT_EQ(tl.fps.den, 1);
 }
 
 TEST_F(Parse, CameraKeysTakeSceneFovAndZeroRollByDefault) {
-  Timeline tl = load_timeline(write(R"([video]
+  Timeline tl = load_timeline(all_scenes(), write(R"([video]
 scene = "sdf_morph"
 [camera]
 speed = "constant"
@@ -189,7 +191,7 @@ roll = 15
 }
 
 TEST_F(Parse, TimeMayRunBackwardsAndHold) {
-  Timeline tl = load_timeline(write(R"([video]
+  Timeline tl = load_timeline(all_scenes(), write(R"([video]
 scene = "sdf_morph"
 fps = 10
 [time]
@@ -202,7 +204,7 @@ keys = [[0, 5], [1, 5], [2, 3]]
 }
 
 TEST_F(Parse, OddSizeIsFineWithoutVideo) {
-  Timeline tl = load_timeline(write(video_with("resolution = [63, 35]")), nullptr);
+  Timeline tl = load_timeline(all_scenes(), write(video_with("resolution = [63, 35]")), nullptr);
   EXPECT_EQ(tl.width, 63);
   EXPECT_NO_THROW(validate_overrides(tl));
 }

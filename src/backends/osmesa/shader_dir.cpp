@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backends/osmesa/shader_source.h"
+#include "render/data_files.h"
 
 namespace sdfreel {
 
@@ -28,17 +29,8 @@ std::string find_shader_dir() {
                         " is not a shader folder (it has no common/ subfolder)");
     return env;
   }
-  std::vector<fs::path> candidates;
+  const std::vector<fs::path> candidates = data_file_candidates("shaders");
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path bin = exe.parent_path();
-    candidates = {bin / ".." / "shaders", bin / ".." / ".." / "shaders",
-                  bin / ".." / "share" / "sdfreel" / "shaders"};
-  }
-#ifdef SDFREEL_SOURCE_DIR
-  candidates.push_back(fs::path(SDFREEL_SOURCE_DIR) / "shaders");
-#endif
   std::string tried;
   for (const fs::path& c : candidates) {
     if (is_shader_dir(c)) return fs::weakly_canonical(c, ec).string();

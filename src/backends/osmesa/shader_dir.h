@@ -4,10 +4,9 @@
 
 namespace sdfreel {
 
-// The shader folder: env SDFREEL_SHADER_DIR if set (it must exist), else the first of ../shaders,
-// ../../shaders and ../share/sdfreel/shaders next to the executable (/proc/self/exe) that holds
-// common/, else the source tree's shaders/ (compile-time SDFREEL_SOURCE_DIR). Throws ShaderError
-// when none is found.
+// The shader folder: env SDFREEL_SHADER_DIR if set (it must exist), else the first folder holding
+// common/ of data_file_candidates("shaders") (render/data_files.h: <prefix>/share/sdfreel/shaders,
+// or the source tree's from a build tree). Throws ShaderError when none is found.
 std::string find_shader_dir();
 
 }  // namespace sdfreel

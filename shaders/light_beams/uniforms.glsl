@@ -1,0 +1,28 @@
+// light_beams: the per-frame constants, the twin of src/scenes/light_beams/uniforms.h. The C++
+// scene computes them in prepare() and hands them over through shader_uniforms() as
+// u_beams.<field>.
+
+const int LIGHT_COUNT = 4;
+const int BEAM_COUNT = 4;
+const int OCCLUDER = LIGHT_COUNT + BEAM_COUNT;
+const int SHAPE_COUNT = OCCLUDER + 1;
+
+const int ESTIMATOR_SEED_RAY = 0;
+const int ESTIMATOR_PENUMBRA = 1;
+const int ESTIMATOR_EXACT = 2;
+
+struct BeamsUniforms {
+  Shape shapes[SHAPE_COUNT];
+  vec3 color[SHAPE_COUNT];
+  float gain[SHAPE_COUNT];
+  float fades[SHAPE_COUNT];
+  float glow_constant, glow_linear, glow_quadratic;
+  vec3 background;
+  int estimator;
+  int shadow_steps;
+  float min_hit_dist;
+  float max_trace_dist;
+  int hit_mask;
+};
+
+uniform BeamsUniforms u_beams;

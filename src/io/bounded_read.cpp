@@ -1,0 +1,49 @@
+#include "io/bounded_read.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace sdfreel {
+
+std::optional<std::string> read_regular_file(const std::string& path, uint64_t max_bytes) {
+  // O_NONBLOCK: opening a FIFO without a writer returns at once instead of blocking.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT) return std::nullopt;
+    throw std::runtime_error("cannot open " + path + ": " + std::strerror(errno));
+  }
+  struct stat st {};
+  std::string problem;
+  if (::fstat(fd, &st) != 0)
+    problem = std::strerror(errno);
+  else if (!S_ISREG(st.st_mode))
+    problem = "not a regular file (a FIFO, device or directory)";
+  else if (uint64_t(st.st_size) > max_bytes)
+    problem = "larger than " + std::to_string(max_bytes >> 20) + " MiB";
+  std::string bytes;
+  if (problem.empty()) {
+    // Stops one byte past the cap, in case the file grows while it is read.
+    char chunk[1 << 16];
+    for (;;) {
+      const ssize_t n = ::read(fd, chunk, sizeof chunk);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) problem = std::strerror(errno);
+      if (n <= 0) break;
+      bytes.append(chunk, size_t(n));
+      if (bytes.size() > max_bytes) {
+        problem = "larger than " + std::to_string(max_bytes >> 20) + " MiB";
+        break;
+      }
+    }
+  }
+  ::close(fd);
+  if (!problem.empty()) throw std::runtime_error("cannot read " + path + ": " + problem);
+  return bytes;
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,29 @@
+#include "io/fault_injection.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+
+namespace sdfreel {
+namespace {
+
+long fault_at() {
+  static const long at = [] {
+    const char* v = std::getenv("SDFREEL_FAULT_AT");
+    return v ? std::atol(v) : 0L;
+  }();
+  return at;
+}
+
+std::atomic<long> g_operations{0};
+
+}  // namespace
+
+bool inject_io_fault() {
+  const long at = fault_at();
+  if (at <= 0 || g_operations.fetch_add(1) + 1 != at) return false;
+  errno = ENOSPC;
+  return true;
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,10 @@
+#pragma once
+// Test hook for the fault-injection tests: SDFREEL_FAULT_AT=N makes the N-th file-system operation
+// of the process (write, fsync, close or rename of an output file, counted from 1) fail with
+// ENOSPC, as a full disk would. Unset (always, outside tests), it costs one load per operation.
+namespace sdfreel {
+
+// True when this operation must fail; sets errno to ENOSPC then.
+bool inject_io_fault();
+
+}  // namespace sdfreel

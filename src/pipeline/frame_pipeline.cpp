@@ -1,0 +1,82 @@
+#include "pipeline/frame_pipeline.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "io/half_image.h"
+#include "io/hashing.h"
+#include "pipeline/errors.h"
+#include "scenes/registry.h"
+
+namespace sdfreel {
+
+FrameContext frame_context_at(const Timeline& tl, const SceneInfo& scene, int frame, double t) {
+  FrameContext ctx;
+  ctx.frame_index = frame;
+  ctx.video_time = t;
+  ctx.scene_time = tl.time ? tl.time->sample(t).at(0) : t;
+  ctx.width = tl.width;
+  ctx.height = tl.height;
+  ctx.samples = tl.samples;
+  ctx.seed = tl.seed;
+  ctx.quality = tl.quality;
+  ctx.pose = tl.camera.sample(t, scene.default_camera);
+  ctx.params = ParamValues(&scene.params);
+  for (const ParamTrack& p : tl.params) ctx.params.set(p.name, p.curve.sample(t));
+  finish_frame_context(ctx);
+  return ctx;
+}
+
+FrameContext frame_context(const Timeline& tl, const SceneInfo& scene, int frame) {
+  return frame_context_at(tl, scene, frame, tl.video_time(frame));
+}
+
+FramePipeline::FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backend)
+    : tl_(tl),
+      scene_(find_scene(tl.scene)),
+      backend_(std::move(backend)),
+      display_(tl.color_config, tl.display, tl.view) {
+  if (!scene_) throw UsageError("unknown scene '" + tl.scene + "'");
+  backend_->begin(*scene_);
+}
+
+RenderedFrame FramePipeline::render(int frame) {
+  return render_context(frame_context(tl_, *scene_, frame));
+}
+
+RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
+  RenderedFrame f;
+  f.index = ctx.frame_index;
+  f.ctx = ctx;
+  const auto start = std::chrono::steady_clock::now();
+  f.linear = backend_->render(ctx, f.stats);
+  if (auto bad = find_non_finite(f.linear))
+    throw RenderError("frame " + std::to_string(ctx.frame_index) + ": " + *bad +
+                      " (a frame with NaN or Inf is never written)");
+  round_to_half(f.linear);
+  f.display = display_.apply(f.linear);
+  f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  f.linear_hash = linear_half_hash(f.linear);
+  f.display_md5 = md5_rgb48le(f.display);
+  return f;
+}
+
+std::map<std::string, std::string> frame_metadata(const Timeline& tl, const RenderedFrame& f) {
+  char buf[512];
+  const CameraPose& p = f.ctx.pose;
+  std::snprintf(buf, sizeof buf,
+                "position=[%.9g, %.9g, %.9g] target=[%.9g, %.9g, %.9g] fov=%.9g roll=%.9g",
+                p.position.x, p.position.y, p.position.z, p.target.x, p.target.y, p.target.z,
+                p.fov_deg, p.roll_deg);
+  auto num = [](double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  return {{"timeline_sha256", tl.sha256},     {"scene", tl.scene},
+          {"frame", std::to_string(f.index)}, {"video_time", num(f.ctx.video_time)},
+          {"TIME", num(f.ctx.scene_time)},    {"camera", buf},
+          {"linear_md5", f.linear_hash},      {"display_md5", f.display_md5}};
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,62 @@
+// Rules for [output] names, checked with the rest of the timeline so that a render never creates
+// its folder, lock and manifest for a video it cannot write.
+#include <algorithm>
+#include <cctype>
+
+#include "timeline/rules.h"
+
+namespace sdfreel {
+namespace {
+
+struct Container {
+  const char* extension;
+  const char* codecs[3];  // what libav's muxer accepts (tests/io checks this against libav)
+};
+
+constexpr Container kContainers[] = {
+    {".mp4", {"h264"}},
+    {".mkv", {"h264", "ffv1", "prores"}},
+    {".mov", {"h264", "prores"}},
+};
+
+std::string lower_extension(const std::string& name) {
+  const size_t dot = name.rfind('.');
+  if (dot == std::string::npos || dot == 0) return "";
+  std::string ext = name.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+std::string check_path_text(const std::string& key, const std::string& text) {
+  for (unsigned char c : text)
+    if (c < 0x20 || c == 0x7f)
+      return key + " contains a control character (code " + std::to_string(int(c)) +
+             "); file names cannot hold it";
+  return "";
+}
+
+std::string check_video_name(const std::string& name, const std::string& codec) {
+  if (name.empty()) return "";
+  if (std::string problem = check_path_text("output.video", name); !problem.empty()) return problem;
+  if (name.find('/') != std::string::npos || name == "." || name == "..")
+    return "output.video '" + name + "' must be a file name; it is written into output.dir";
+  const std::string ext = lower_extension(name);
+  for (const Container& c : kContainers) {
+    if (ext != c.extension) continue;
+    for (const char* fits : c.codecs)
+      if (fits && codec == fits) return "";
+    std::string fitting;
+    for (const Container& other : kContainers)
+      for (const char* fits : other.codecs)
+        if (fits && codec == fits)
+          fitting += std::string(fitting.empty() ? "" : ", ") + other.extension;
+    return "output.video '" + name + "': a " + ext + " file cannot hold codec " + codec + " (use " +
+           fitting + ")";
+  }
+  return "output.video '" + name + "': unknown container '" + ext + "' (use .mp4, .mkv or .mov)";
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,33 @@
+#pragma once
+// The one check every fault-injection test ends with: every frame the manifest lists is complete
+// and matches its hash, nothing torn is published under a final name, no temporary is left by a
+// finished writer, and a published video decodes to exactly the listed frames.
+#include <string>
+#include <vector>
+
+#include "cli/harness.h"
+
+namespace sdfreel::test {
+
+// The sdfreel under test: $SDFREEL_TEST_BINARY when set (to run these tests against another
+// build, e.g. to see them fail on one without the fixes), else the binary of this build.
+std::string sdfreel_binary();
+RunResult sdfreel_run(const std::string& args, const std::string& cwd);
+
+struct FolderReport {
+  std::vector<std::string> problems;  // empty: consistent
+  int listed = 0;                     // frames the manifest (with its journal) lists
+  bool has_video = false;
+  std::string describe() const;
+};
+
+// Checks DIR (a render's output folder). `video` is the video's file name ("" for none). With
+// `allow_temporaries`, hidden temporaries of killed writers are not problems (render's start-up
+// removes them).
+FolderReport check_output_folder(const std::string& dir, const std::string& video,
+                                 bool allow_temporaries = false);
+
+// "frames/00003.png"-style names of the files in DIR/frames and DIR whose name contains "tmp".
+std::vector<std::string> temporaries_in(const std::string& dir);
+
+}  // namespace sdfreel::test

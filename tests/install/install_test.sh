@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# The installed sdfreel renders without the source tree: `cmake --install` into a fresh prefix, and
+# the Debian package from `cpack -G DEB` unpacked with `dpkg -x`, each render a small timeline from
+# a folder holding only that timeline, with no SDFREEL_* variables, on every backend; their
+# frames.framemd5 must equal the build tree's. Then, with share/sdfreel taken away, the installed
+# binary must fail: it found its data in its prefix, not in the source tree it was built from.
+# Usage: install_test.sh BUILD_DIR CMAKE CPACK BACKEND...
+set -euo pipefail
+build=$1 cmake=$2 cpack=$3
+shift 3
+backends=("$@")
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+for v in $(env | sed -n 's/^\(SDFREEL_[A-Za-z0-9_]*\)=.*/\1/p'); do unset "$v"; done
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/t.toml" <<'TOML'
+[video]
+scene = "sdf_morph"
+fps = 10
+duration = 0.3
+resolution = [64, 36]
+samples = 1
+quality = "draft"
+
+[output]
+dir = "out"
+frames = ["exr", "png"]
+video = "t.mkv"
+codec = "ffv1"
+
+[camera]
+keys = [
+  { t = 0.0, position = [0.0, 1.5, -4.0], target = [0.0, 0.6, 0.0], fov = 40.0 },
+  { t = 0.3, position = [1.0, 1.6, -3.8], target = [0.0, 0.6, 0.0], fov = 42.0 },
+]
+TOML
+
+# The reference: the build tree's binary.
+mkdir "$tmp/ref"
+cp "$tmp/t.toml" "$tmp/ref/"
+for b in "${backends[@]}"; do
+  (cd "$tmp/ref" && "$build/sdfreel" render t.toml --backend "$b" --out "$b" 2>/dev/null) ||
+    fail "build tree render ($b)"
+done
+
+"$cmake" --install "$build" --prefix "$tmp/prefix" >/dev/null
+(cd "$tmp" && "$cpack" -G DEB --config "$build/CPackConfig.cmake" -B "$tmp/pkg" >/dev/null)
+deb=$(ls "$tmp"/pkg/sdfreel_*.deb)
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "package: $(basename "$deb"), Depends: $depends"
+for lib in libopenimageio libopencolorio libavcodec libtbb; do
+  [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib"
+done
+if [[ " ${backends[*]} " == *" osmesa "* ]]; then
+  [[ $depends == *libosmesa6* ]] || fail "the package does not depend on libosmesa6"
+fi
+dpkg -x "$deb" "$tmp/deb"
+
+renders_like_the_build_tree() {  # PREFIX LABEL
+  local prefix=$1 label=$2 b run
+  [ -x "$prefix/bin/sdfreel" ] || fail "$label: no bin/sdfreel"
+  [ -f "$prefix/share/sdfreel/ocio/config.ocio" ] || fail "$label: no share/sdfreel/ocio/config.ocio"
+  [ -d "$prefix/share/sdfreel/shaders/common" ] || fail "$label: no share/sdfreel/shaders"
+  for b in "${backends[@]}"; do
+    run="$tmp/run-$label-$b"
+    mkdir "$run"
+    cp "$tmp/t.toml" "$run/"
+    (cd "$run" && "$prefix/bin/sdfreel" render t.toml --backend "$b" 2>"$run.log") ||
+      fail "$label: render with $b: $(tail -n 3 "$run.log")"
+    cmp "$run/out/frames.framemd5" "$tmp/ref/$b/frames.framemd5" ||
+      fail "$label: $b frames differ from the build tree's"
+    [ -s "$run/out/t.mkv" ] || fail "$label: no video"
+    echo "$label: $b render matches the build tree ($(grep -vc '^#' "$run/out/frames.framemd5") frames)"
+  done
+}
+renders_like_the_build_tree "$tmp/prefix" install
+renders_like_the_build_tree "$tmp/deb/usr" deb
+
+# Without its data the installed binary must fail, whatever the source tree holds: the OCIO config
+# (every backend needs it), then the shaders (osmesa).
+fails_without() {  # RELATIVE BACKEND MESSAGE
+  local data=$tmp/prefix/share/sdfreel run=$tmp/run-without-${1//\//_}
+  mv "$data/$1" "$data/$1.away"
+  mkdir "$run"
+  cp "$tmp/t.toml" "$run/"
+  if (cd "$run" && "$tmp/prefix/bin/sdfreel" render t.toml --backend "$2" 2>"$run.log"); then
+    fail "without share/sdfreel/$1 the installed binary still rendered with $2"
+  fi
+  grep -q "$3" "$run.log" || fail "without $1: expected '$3', got: $(cat "$run.log")"
+  mv "$data/$1.away" "$data/$1"
+  echo "without share/sdfreel/$1: $2 fails ($(grep -m 1 "$3" "$run.log"))"
+}
+fails_without ocio/config.ocio cpu "cannot find the shipped OCIO config"
+if [[ " ${backends[*]} " == *" osmesa "* ]]; then
+  fails_without shaders osmesa "cannot find the GLSL shader folder"
+fi

@@ -1,0 +1,179 @@
+// The water_lily scene through its Scene interface (tiny images with a plain pixel loop) and its
+// parts directly: every element of seed 001 must be there and move as the seed says.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/frame_context.h"
+#include "scenes/registry.h"
+#include "scenes/water_lily/geometry.h"
+#include "scenes/water_lily/render.h"
+#include "scenes/water_lily/uniforms.h"
+
+namespace sdfreel::water_lily {
+namespace {
+
+using glm::vec3;
+
+constexpr int W = 32, H = 18;
+
+const SceneInfo& info() {
+  const SceneInfo* s = find_scene("water_lily");
+  EXPECT_NE(s, nullptr);
+  return *s;
+}
+
+FrameContext context(double time, Quality q = Quality::Draft) {
+  FrameContext ctx;
+  ctx.width = W;
+  ctx.height = H;
+  ctx.scene_time = time;
+  ctx.quality = q;
+  ctx.pose = info().default_camera;
+  ctx.params = ParamValues(&info().params);
+  finish_frame_context(ctx);
+  return ctx;
+}
+
+struct Image {
+  std::vector<vec3> px;
+  RayStats stats;
+};
+
+Image render(const FrameContext& ctx) {
+  std::unique_ptr<Scene> scene = info().make();
+  scene->prepare(ctx);
+  const float pixel_angle = footprint_angle(ctx.camera.tan_half_fov, ctx.height);
+  Image img;
+  for (int y = 0; y < ctx.height; ++y)
+    for (int x = 0; x < ctx.width; ++x) {
+      const vec3 d = primary_ray_dir(ctx.camera, x + 0.5f, y + 0.5f, ctx.width, ctx.height);
+      img.px.push_back(scene->radiance(Ray{ctx.camera.origin, d, pixel_angle}, img.stats));
+    }
+  return img;
+}
+
+double mean_abs_difference(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.px.size(); ++i) {
+    const vec3 d = glm::abs(a.px[i] - b.px[i]);
+    sum += d.x + d.y + d.z;
+  }
+  return sum / (3.0 * double(a.px.size()));
+}
+
+TEST(WaterLily, IsRegisteredWithDocumentedParameters) {
+  EXPECT_EQ(info().shader, "water_lily/water_lily.glsl");
+  for (const char* name : {"curl_amount", "leaf_drift", "water_speed", "water_bump", "contrast",
+                           "saturation", "vignette", "fog_distance", "petal_translucency"}) {
+    const ParamSpec* p = find_param(info().params, name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_FALSE(p->doc.empty()) << name;
+  }
+}
+
+TEST(WaterLily, DefaultViewIsFiniteAndShowsFlowersLeavesWaterAndSky) {
+  const Image img = render(context(2.0, Quality::Final));
+  for (const vec3& c : img.px)
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(c[k]) && c[k] >= 0.0f);
+  EXPECT_EQ(img.stats.capped, 0u);
+  // Hit ids of the same view: flowers and pads are both seen.
+  FrameContext ctx = context(2.0);
+  ctx.march.hit_mask = true;
+  const Image ids = render(ctx);
+  int flowers = 0, leaves = 0, none = 0;
+  for (const vec3& c : ids.px) {
+    flowers += c.x == 1.0f;
+    leaves += c.x == 2.0f;
+    none += c.x == 0.0f;
+  }
+  EXPECT_GT(flowers, 4);
+  EXPECT_GT(leaves, 8);
+  EXPECT_GT(none, 8);  // water and sky
+}
+
+TEST(WaterLily, PetalsCurlWithTimeAndTheDriftingLeafMoves) {
+  const LilyUniforms a = make_lily_uniforms(context(0.0));
+  const LilyUniforms b = make_lily_uniforms(context(2.5));
+  for (int f = 0; f < FLOWER_COUNT; ++f) EXPECT_NE(a.curl[f], b.curl[f]) << f;
+  EXPECT_NE(a.drift_offset, b.drift_offset);
+  EXPECT_NE(a.water_time_a, b.water_time_a);
+  // The drifting leaf's distance field moves with it; the others stay.
+  const glm::vec2 c = LEAVES[DRIFTING_LEAF].xz;
+  const vec3 p(c.x + 0.3f, LEAF_Y, c.y);
+  EXPECT_NE(lilyPad(p, DRIFTING_LEAF, a), lilyPad(p, DRIFTING_LEAF, b));
+  const vec3 q(LEAVES[0].xz.x, LEAF_Y, LEAVES[0].xz.y);
+  EXPECT_EQ(lilyPad(q, 0, a), lilyPad(q, 0, b));
+  EXPECT_GT(mean_abs_difference(render(context(0.0)), render(context(2.5))), 1e-3);
+}
+
+TEST(WaterLily, WaterIsCalmerFarAway) {
+  const LilyUniforms u = make_lily_uniforms(context(1.0));
+  double near = 0.0, far = 0.0;
+  for (int i = 0; i < 64; ++i) {
+    const float x = 0.37f * float(i), z = 0.23f * float(i);
+    near += 1.0 - waterNormal(x, z, 1.0f, u).y;
+    far += 1.0 - waterNormal(x, z, 16.0f, u).y;
+  }
+  EXPECT_GT(near, 0.0);
+  EXPECT_LT(far, 0.25 * near);
+  EXPECT_EQ(waterNormal(1.0f, 2.0f, 40.0f, u), vec3(0.0f, 1.0f, 0.0f));
+}
+
+TEST(WaterLily, WaterWrapsWithoutACut) {
+  // Just before and after the water's time coordinate wraps, the normals barely change.
+  FrameContext ctx = context(0.0);
+  const double speed = ctx.params.scalar("water_speed");
+  const double wrap_time = 512.0 / speed;
+  const LilyUniforms before = make_lily_uniforms(context(wrap_time - 0.01));
+  const LilyUniforms after = make_lily_uniforms(context(wrap_time + 0.01));
+  EXPECT_GT(before.water_blend, 0.99f);
+  EXPECT_EQ(after.water_blend, 0.0f);
+  for (int i = 0; i < 16; ++i) {
+    const vec3 a = waterNormal(0.3f * float(i), 0.7f, 1.0f, before);
+    const vec3 b = waterNormal(0.3f * float(i), 0.7f, 1.0f, after);
+    EXPECT_LT(glm::length(a - b), 0.02f) << i;
+  }
+}
+
+TEST(WaterLily, SoftShadowDarkensUnderAFlowerAndNotInTheOpen) {
+  const LilyUniforms u = make_lily_uniforms(context(0.0));
+  RayStats stats;
+  // A point on the water on the far side of flower 0 from the sun: shadowed.
+  const FlowerPlacement& f = FLOWERS[0];
+  const vec3 under = vec3(f.xz.x, 0.0f, f.xz.y) - u.sun_dir * (0.25f / u.sun_dir.y);
+  EXPECT_LT(softShadow(vec3(under.x, 0.01f, under.z), u.sun_dir, u.shadow_k, 64, u, stats), 0.5f);
+  EXPECT_EQ(softShadow(vec3(-6.0f, 0.01f, -3.0f), u.sun_dir, u.shadow_k, 64, u, stats), 1.0f);
+}
+
+TEST(WaterLily, GradingFollowsTheSeed) {
+  LilyUniforms u = make_lily_uniforms(context(0.0));
+  u.vignette = 0.0f;
+  u.contrast = 1.0f;
+  u.saturation = 1.0f;
+  const vec3 rd = u.cam_forward;
+  // Contrast col^2 (3 - 2 col): darks darker, lights lighter, 0.5 fixed.
+  EXPECT_LT(grade(vec3(0.2f), rd, u).x, 0.2f);
+  EXPECT_GT(grade(vec3(0.8f), rd, u).x, 0.8f);
+  EXPECT_FLOAT_EQ(grade(vec3(0.5f), rd, u).x, 0.5f);
+  // Vignette: the centre keeps its value, an off-axis ray is darker.
+  u.contrast = 0.0f;
+  u.vignette = 0.5f;
+  EXPECT_EQ(grade(vec3(0.5f), rd, u), vec3(0.5f));
+  const vec3 corner = glm::normalize(u.cam_forward + 0.4f * u.cam_right + 0.3f * u.cam_up);
+  EXPECT_LT(grade(vec3(0.5f), corner, u).x, 0.49f);
+}
+
+TEST(WaterLily, HugeTimeKeepsAnimating) {
+  const LilyUniforms a = make_lily_uniforms(context(1e6));
+  const LilyUniforms b = make_lily_uniforms(context(1e6 + 1.0 / 30.0));
+  EXPECT_NE(a.curl[0], b.curl[0]);
+  EXPECT_NE(a.water_time_a, b.water_time_a);
+  EXPECT_LT(std::abs(a.curl[0] - b.curl[0]), 0.01f);
+}
+
+}  // namespace
+}  // namespace sdfreel::water_lily

@@ -1,0 +1,21 @@
+#pragma once
+// Runs commands, and the sdfreel binary this build made, for end-to-end tests.
+#include <string>
+
+namespace sdfreel::test {
+
+struct RunResult {
+  int status = -1;  // exit status; -1 when the command did not exit normally
+  std::string out, err;
+};
+
+// `command` through /bin/sh in `cwd` with `env` prefixed (e.g. "LP_NUM_THREADS=1 "), capturing
+// stdout and stderr.
+RunResult run(const std::string& command, const std::string& cwd = ".",
+              const std::string& env = "");
+// `sdfreel ARGS`.
+RunResult run_sdfreel(const std::string& args, const std::string& cwd = ".",
+                      const std::string& env = "");
+bool have_tool(const std::string& name);  // on PATH
+
+}  // namespace sdfreel::test
