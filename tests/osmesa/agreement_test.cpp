@@ -112,8 +112,9 @@ TEST_P(Agreement, BothBackendsGiveTheSameBits) {
   // without counted evaluations (light_beams names the shape under the pixel directly), and a
   // parameter extreme may switch the scene's lights off: there the bits alone are compared.
   const Mode m = GetParam().mode;
-  if (m == Mode::Draft || m == Mode::Final || m == Mode::Reference || m == Mode::Naive)
+  if (m == Mode::Draft || m == Mode::Final || m == Mode::Reference || m == Mode::Naive) {
     EXPECT_GT(evals, uint64_t(W * H) * poses.size());
+  }
 }
 
 std::vector<Case> cases() {
