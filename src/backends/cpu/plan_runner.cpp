@@ -5,13 +5,13 @@
 #include "backends/cpu/cpu_image_pass.h"
 #include "backends/cpu/cpu_mesh_pass.h"
 #include "backends/cpu/cpu_ray_pass.h"
+#include "backends/cpu/cpu_ray_pass_resolved.h"
 #include "render/quality.h"
 
 namespace sdfreel {
 
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
                        RayStats& stats) {
-  CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   CpuPassContext pc{
       ctx,
       glm::vec2(0.5f),
@@ -20,6 +20,13 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
       s.threads,
       s.tile_size,
       s.packets};
+  if (const RayPass* ray = resolvable_ray_pass(plan); ray && s.packets) {
+    glm::vec4 clear(0.0f);
+    for (const TargetSpec& t : plan_targets(plan))
+      if (t.name == COLOUR_TARGET) clear = t.clear;
+    return run_ray_pass_resolved(*ray, pc, clear, stats);
+  }
+  CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   ImageRGBA sum(ctx.width, ctx.height);
   for (const glm::vec2& offset : ctx.sample_offsets) {
     pc.offset = offset;
