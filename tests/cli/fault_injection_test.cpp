@@ -42,7 +42,7 @@ TEST(FaultInjection, FullDiskNeverPublishesATruncatedFrameAndExitsOne) {
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   // About 15 KB of frame files a frame: the disk fills during frame 2 or 3.
   write_file(dir + "/disk/t.toml", small_timeline(8));
-  RunResult r = sdfreel_run("render t.toml --no-video", dir + "/disk");
+  RunResult r = run_sdfreel("render t.toml --no-video", dir + "/disk");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("No space left"), std::string::npos) << r.err;
   EXPECT_TRUE(std::regex_search(r.err, std::regex("error: frame [0-9]+: "))) << r.err;
@@ -56,17 +56,17 @@ TEST(FaultInjection, RerenderOnANearlyFullDiskFailsAndKeepsTheOldFrames) {
   SmallDisk disk(dir + "/disk", "400k");
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root)";
   write_file(dir + "/disk/t.toml", small_timeline(4));
-  ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir + "/disk").status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir + "/disk").status, 0);
   // Fill the disk, then give back one 4 KB page: less than a frame file (each is 7-9 KB).
   run("dd if=/dev/zero of=filler bs=4k 2>/dev/null; truncate -s -4k filler", dir + "/disk");
-  const RunResult r = sdfreel_run("render t.toml --no-video", dir + "/disk");
+  const RunResult r = run_sdfreel("render t.toml --no-video", dir + "/disk");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("frame "), std::string::npos) << r.err;
   fs::remove(dir + "/disk/filler");
   const FolderReport rep = check_output_folder(dir + "/disk/out", "");
   EXPECT_TRUE(rep.problems.empty()) << rep.describe();
   EXPECT_EQ(rep.listed, 4);
-  EXPECT_EQ(sdfreel_run("encode out -o v.mkv --codec ffv1", dir + "/disk").status, 0);
+  EXPECT_EQ(run_sdfreel("encode out -o v.mkv --codec ffv1", dir + "/disk").status, 0);
 }
 
 // SDFREEL_FAULT_AT=N fails the N-th write, fsync, close or rename of the process with ENOSPC. Every
@@ -86,7 +86,7 @@ TEST(FaultInjection, WriteFailureAtEveryWriteSite) {
     const FolderReport rep = check_output_folder(dir + "/out", "small.mkv");
     EXPECT_TRUE(rep.problems.empty()) << "fault " << n << ": " << r.err << rep.describe();
     if (n % 3 != 0) continue;  // a resume after every third fault keeps the test under a minute
-    const RunResult resumed = sdfreel_run("render t.toml --resume", dir);
+    const RunResult resumed = run_sdfreel("render t.toml --resume", dir);
     EXPECT_EQ(resumed.status, 0) << "fault " << n << ": " << resumed.err;
     const FolderReport done = check_output_folder(dir + "/out", "small.mkv");
     EXPECT_TRUE(done.problems.empty()) << "fault " << n << " then resume:\n" << done.describe();
@@ -104,7 +104,7 @@ TEST(FaultInjection, KillAtManyPointsThenResume) {
   const std::string dir = scratch_dir("fault-kill");
   write_file(dir + "/t.toml", small_timeline(10));
   const auto start = std::chrono::steady_clock::now();
-  ASSERT_EQ(sdfreel_run("render t.toml", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml", dir).status, 0);
   const double full =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string want = read_file(dir + "/out/frames.framemd5");
@@ -130,7 +130,7 @@ TEST(FaultInjection, KillAtManyPointsThenResume) {
     // What a kill leaves is consistent except for temporaries of the killed writer.
     const FolderReport after_kill = check_output_folder(dir + "/out", "small.mkv", true);
     EXPECT_TRUE(after_kill.problems.empty()) << context << "\n" << after_kill.describe();
-    const RunResult r = sdfreel_run("render t.toml --resume", dir);
+    const RunResult r = run_sdfreel("render t.toml --resume", dir);
     ASSERT_EQ(r.status, 0) << context << ": " << r.err;
     const FolderReport rep = check_output_folder(dir + "/out", "small.mkv");
     EXPECT_TRUE(rep.problems.empty()) << context << "\n" << rep.describe();
@@ -157,7 +157,7 @@ TEST(FaultInjection, ConcurrentShardsAndRenderIntoOneFolder) {
   EXPECT_TRUE(rep.problems.empty()) << rep.describe();
   EXPECT_EQ(rep.listed, 9);
   EXPECT_TRUE(rep.has_video);
-  const RunResult enc = sdfreel_run("encode out -o joined.mkv --codec ffv1", dir);
+  const RunResult enc = run_sdfreel("encode out -o joined.mkv --codec ffv1", dir);
   EXPECT_EQ(enc.status, 0) << enc.err;
   EXPECT_EQ(read_file(dir + "/joined.mkv"), read_file(dir + "/out/small.mkv"));
 }

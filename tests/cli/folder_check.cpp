@@ -13,15 +13,6 @@ namespace sdfreel::test {
 
 namespace fs = std::filesystem;
 
-std::string sdfreel_binary() {
-  const char* other = std::getenv("SDFREEL_TEST_BINARY");
-  return other && *other ? other : SDFREEL_BINARY;
-}
-
-RunResult sdfreel_run(const std::string& args, const std::string& cwd) {
-  return run("'" + sdfreel_binary() + "' " + args, cwd);
-}
-
 std::string FolderReport::describe() const {
   std::string out;
   for (const std::string& p : problems) out += "  " + p + "\n";

@@ -9,11 +9,6 @@
 
 namespace sdfreel::test {
 
-// The sdfreel under test: $SDFREEL_TEST_BINARY when set (to run these tests against another
-// build, e.g. to see them fail on one without the fixes), else the binary of this build.
-std::string sdfreel_binary();
-RunResult sdfreel_run(const std::string& args, const std::string& cwd);
-
 struct FolderReport {
   std::vector<std::string> problems;  // empty: consistent
   int listed = 0;                     // frames the manifest (with its journal) lists

@@ -63,7 +63,7 @@ TEST(Reliability, KilledRendersTemporaryVideoIsCleanedAtStartUp) {
           dir);
   ASSERT_EQ(killed.out, "137\n") << "the render was not killed mid-run";
   ASSERT_FALSE(temporaries_in(dir + "/out").empty()) << "the kill left no temporary to clean";
-  const RunResult r = sdfreel_run("render t.toml --resume --no-video --frames 0-1", dir);
+  const RunResult r = run_sdfreel("render t.toml --resume --no-video --frames 0-1", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(temporaries_in(dir + "/out").empty())
       << "left: " << ::testing::PrintToString(temporaries_in(dir + "/out"));
@@ -88,7 +88,7 @@ TEST(Reliability, BadVideoNamesAndControlCharactersInDirAreRefusedBeforeWriting)
   for (const Case& c : cases) {
     const std::string dir = scratch_dir(std::string("rel-bad-") + c.name);
     write_file(dir + "/t.toml", c.timeline);
-    const RunResult r = sdfreel_run("render t.toml", dir);
+    const RunResult r = run_sdfreel("render t.toml", dir);
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
     EXPECT_TRUE(std::regex_search(r.err, std::regex("^t\\.toml:[0-9]+:[0-9]+: error: ")))
         << c.name << ": " << r.err;
@@ -101,8 +101,8 @@ TEST(Reliability, BadVideoNamesAndControlCharactersInDirAreRefusedBeforeWriting)
   // encode -o with a container that cannot hold the codec: exit 2, no file.
   const std::string dir = scratch_dir("rel-bad-encode");
   write_file(dir + "/t.toml", small_timeline(2));
-  ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
-  const RunResult r = sdfreel_run("encode out -o v.mp4 --codec ffv1", dir);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  const RunResult r = run_sdfreel("encode out -o v.mp4 --codec ffv1", dir);
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_TRUE(temporaries_in(dir).empty() && !fs::exists(dir + "/v.mp4"));
 }
@@ -116,17 +116,17 @@ TEST(Reliability, CommandLineNumbersDoNotOverflow) {
         "--resolution 18446744073709551680x2", "--resolution 64x-36", "--resolution 0x0x0",
         "--shard 1/18446744073709551617", "--shard 99999999999999999999/3", "--shard -1/2",
         "--shard 1/+2", "--frames 0-99999999999", "--frames 4294967296"}) {
-    const RunResult r = sdfreel_run(std::string("render t.toml --no-video ") + args, dir);
+    const RunResult r = run_sdfreel(std::string("render t.toml --no-video ") + args, dir);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir + "/out")) << args << " wrote the output folder";
   }
   // The last of 2^62 shards of 4 frames is frame 3; its neighbour holds no frame.
   RunResult r =
-      sdfreel_run("render t.toml --no-video --shard 4611686018427387903/4611686018427387904", dir);
+      run_sdfreel("render t.toml --no-video --shard 4611686018427387903/4611686018427387904", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir + "/out/frames/00003.png"));
   EXPECT_FALSE(fs::exists(dir + "/out/frames/00000.png"));
-  r = sdfreel_run("render t.toml --no-video --shard 4611686018427387902/4611686018427387904", dir);
+  r = run_sdfreel("render t.toml --no-video --shard 4611686018427387902/4611686018427387904", dir);
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
@@ -157,9 +157,9 @@ TEST(Reliability, FifosAndDevicesAreRefusedAtOnce) {
 TEST(Reliability, DamagedManifestDoesNotStopResume) {
   const std::string dir = scratch_dir("rel-damaged");
   write_file(dir + "/t.toml", small_timeline(3));
-  ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
   write_file(dir + "/out/manifest.json", "{\"format\": \"sdfreel-manifest-1\", \"frames\": [");
-  const RunResult r = sdfreel_run("render t.toml --no-video --resume", dir);
+  const RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("damaged"), std::string::npos) << r.err;
   const FolderReport rep = check_output_folder(dir + "/out", "");
@@ -170,24 +170,24 @@ TEST(Reliability, DamagedManifestDoesNotStopResume) {
 TEST(Reliability, MalformedManifestIsExitTwoLikeAMissingOne) {
   const std::string dir = scratch_dir("rel-malformed");
   write_file(dir + "/t.toml", small_timeline(2));
-  ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
-  EXPECT_EQ(sdfreel_run("verify t.toml --manifest missing.json", dir).status, 2);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  EXPECT_EQ(run_sdfreel("verify t.toml --manifest missing.json", dir).status, 2);
   write_file(dir + "/bad.json", "{ not json");
-  EXPECT_EQ(sdfreel_run("verify t.toml --manifest bad.json", dir).status, 2);
+  EXPECT_EQ(run_sdfreel("verify t.toml --manifest bad.json", dir).status, 2);
   fs::create_directories(dir + "/enc");
   write_file(dir + "/enc/manifest.json", "[1, 2");
-  EXPECT_EQ(sdfreel_run("encode enc -o v.mkv --codec ffv1", dir).status, 2);
+  EXPECT_EQ(run_sdfreel("encode enc -o v.mkv --codec ffv1", dir).status, 2);
 }
 
 TEST(Reliability, ManifestFrameIndexBeyondIntIsRefusedNotWrapped) {
   const std::string dir = scratch_dir("rel-index");
   write_file(dir + "/t.toml", small_timeline(2));
-  ASSERT_EQ(sdfreel_run("render t.toml --no-video", dir).status, 0);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
   // Frame 0's entry renamed to index 2^40 (which an int wraps to 0): frame 0 is no longer listed.
   auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
   m["frames"][0]["index"] = int64_t(1) << 40;
   write_file(dir + "/out/manifest.json", m.dump());
-  const RunResult r = sdfreel_run("verify t.toml --manifest out/manifest.json --frames 0", dir);
+  const RunResult r = run_sdfreel("verify t.toml --manifest out/manifest.json --frames 0", dir);
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("1099511627776"), std::string::npos) << r.err;
 }

@@ -31,8 +31,13 @@ RunResult run(const std::string& command, const std::string& cwd, const std::str
   return r;
 }
 
+std::string sdfreel_binary() {
+  const char* other = std::getenv("SDFREEL_TEST_BINARY");
+  return other && *other ? other : SDFREEL_BINARY;
+}
+
 RunResult run_sdfreel(const std::string& args, const std::string& cwd, const std::string& env) {
-  return run(std::string("'") + SDFREEL_BINARY + "' " + args, cwd, env);
+  return run("'" + sdfreel_binary() + "' " + args, cwd, env);
 }
 
 bool have_tool(const std::string& name) {

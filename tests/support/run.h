@@ -13,6 +13,9 @@ struct RunResult {
 // stdout and stderr.
 RunResult run(const std::string& command, const std::string& cwd = ".",
               const std::string& env = "");
+// The sdfreel under test: $SDFREEL_TEST_BINARY when set (to run the end-to-end tests against
+// another build, e.g. to see them fail on one without a fix), else the binary of this build.
+std::string sdfreel_binary();
 // `sdfreel ARGS`.
 RunResult run_sdfreel(const std::string& args, const std::string& cwd = ".",
                       const std::string& env = "");
