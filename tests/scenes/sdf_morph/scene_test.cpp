@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/frame_context.h"
 #include "scenes/registry.h"
+#include "scenes/scene_pixels.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/render.h"
 #include "scenes/sdf_morph/uniforms.h"
@@ -32,35 +33,13 @@ const SceneInfo& info() {
 }
 
 FrameContext context(double time, Quality q = Quality::Draft) {
-  FrameContext ctx;
-  ctx.width = W;
-  ctx.height = H;
-  ctx.scene_time = time;
-  ctx.quality = q;
-  ctx.pose = info().default_camera;
-  ctx.params = ParamValues(&info().params);
-  finish_frame_context(ctx);
-  return ctx;
+  return test::scene_context(info(), W, H, time, q);
 }
 
-struct Image {
-  std::vector<vec3> px;
-  RayStats stats;
-  const vec3& at(int x, int y) const { return px[size_t(y) * W + x]; }
-};
+using Image = test::ScenePixels;
 
-// One ray through each pixel centre, like the CPU backend with one sample.
 Image render(const FrameContext& ctx) {
-  std::unique_ptr<Scene> scene = info().make();
-  scene->prepare(ctx);
-  const float pixel_angle = footprint_angle(ctx.camera.tan_half_fov, ctx.height);
-  Image img;
-  for (int y = 0; y < ctx.height; ++y)
-    for (int x = 0; x < ctx.width; ++x) {
-      const vec3 d = primary_ray_dir(ctx.camera, x + 0.5f, y + 0.5f, ctx.width, ctx.height);
-      img.px.push_back(scene->radiance(Ray{ctx.camera.origin, d, pixel_angle}, img.stats));
-    }
-  return img;
+  return test::render_pixels(info(), ctx);
 }
 
 bool all_finite_non_negative(const Image& img) {
@@ -68,15 +47,6 @@ bool all_finite_non_negative(const Image& img) {
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(c[k]) || c[k] < 0.0f) return false;
   return true;
-}
-
-double mean_abs_difference(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.px.size(); ++i) {
-    const vec3 d = glm::abs(a.px[i] - b.px[i]);
-    sum += d.x + d.y + d.z;
-  }
-  return sum / (3.0 * a.px.size());
 }
 
 float channel_distance(const vec3& a, const vec3& b) {

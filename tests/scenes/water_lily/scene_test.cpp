@@ -9,6 +9,7 @@
 #include "render/camera.h"
 #include "render/frame_context.h"
 #include "scenes/registry.h"
+#include "scenes/scene_pixels.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/render.h"
 #include "scenes/water_lily/uniforms.h"
@@ -27,42 +28,13 @@ const SceneInfo& info() {
 }
 
 FrameContext context(double time, Quality q = Quality::Draft) {
-  FrameContext ctx;
-  ctx.width = W;
-  ctx.height = H;
-  ctx.scene_time = time;
-  ctx.quality = q;
-  ctx.pose = info().default_camera;
-  ctx.params = ParamValues(&info().params);
-  finish_frame_context(ctx);
-  return ctx;
+  return test::scene_context(info(), W, H, time, q);
 }
 
-struct Image {
-  std::vector<vec3> px;
-  RayStats stats;
-};
+using Image = test::ScenePixels;
 
 Image render(const FrameContext& ctx) {
-  std::unique_ptr<Scene> scene = info().make();
-  scene->prepare(ctx);
-  const float pixel_angle = footprint_angle(ctx.camera.tan_half_fov, ctx.height);
-  Image img;
-  for (int y = 0; y < ctx.height; ++y)
-    for (int x = 0; x < ctx.width; ++x) {
-      const vec3 d = primary_ray_dir(ctx.camera, x + 0.5f, y + 0.5f, ctx.width, ctx.height);
-      img.px.push_back(scene->radiance(Ray{ctx.camera.origin, d, pixel_angle}, img.stats));
-    }
-  return img;
-}
-
-double mean_abs_difference(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.px.size(); ++i) {
-    const vec3 d = glm::abs(a.px[i] - b.px[i]);
-    sum += d.x + d.y + d.z;
-  }
-  return sum / (3.0 * double(a.px.size()));
+  return test::render_pixels(info(), ctx);
 }
 
 TEST(WaterLily, IsRegisteredWithDocumentedParameters) {
