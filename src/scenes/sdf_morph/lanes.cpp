@@ -1,5 +1,6 @@
 #include "scenes/sdf_morph/lanes.h"
 
+#include "scenes/common/march_lanes.h"
 #include "scenes/sdf_morph/environment.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
@@ -16,48 +17,12 @@ F8 mapScene_lanes(const V3x8& p, const MorphUniforms& u) {
   return mapSceneBounded(p, u, OBJECT_BOUND_MARGIN, exact);
 }
 
-// march() of sdf_morph/render.cpp for the lanes in `active`: per-lane t, omega, prev_d and step,
-// the relaxed step's fall-back and the tmax rule as masks. Returns t (NO_HIT for misses);
-// inactive lanes return NO_HIT.
+// march() of sdf_morph/render.cpp for the lanes in `active`, `max_steps` at most.
 F8 march_lanes(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, int max_steps,
                F8 eps_per_t, F8 t_before, const MorphUniforms& u, RayStats& stats) {
-  F8 t = tmin;
-  F8 omega = splat(u.naive ? 1.0f : u.step_factor);
-  F8 prev_d = splat(0.0f);
-  F8 step = splat(0.0f);
-  F8 result = splat(NO_HIT);
-  for (int i = 0; i < max_steps && any(active); ++i) {
-    const uint64_t n = count_lanes(active);
-    stats.steps += n;
-    stats.sdf_evals += n;
-    const F8 d = mapScene_lanes(ro + rd * t, u);
-    // Back to the previous point plus a plain step (a `continue` of the scalar loop).
-    const M8 back = active & (omega > 1.0f) & (dm::abs(d) + prev_d < step);
-    t = select(back, t + (prev_d - step), t);
-    step = select(back, prev_d, step);
-    omega = select(back, splat(1.0f), omega);
-    M8 go = active & ~back;
-    const F8 eps = u.naive ? splat(u.hit_eps) : dm::max(MIN_HIT_EPS, eps_per_t * (t_before + t));
-    const M8 hit = go & (d < eps);
-    result = select(hit, t, result);
-    active &= ~hit;
-    go &= ~hit;
-    const F8 new_step = d * omega;
-    step = select(go, new_step, step);
-    prev_d = select(go, d, prev_d);
-    t = select(go, t + new_step, t);
-    const M8 over = go & (t > tmax);
-    // Only a plain step may conclude "nothing before tmax".
-    const M8 miss = over & ((omega <= 1.0f) | (t - step + d > tmax));
-    active &= ~miss;
-    const M8 fall_back = over & ~miss;
-    t = select(fall_back, t + (d - step), t);
-    step = select(fall_back, d, step);
-    omega = select(fall_back, splat(1.0f), omega);
-  }
-  // Lanes out of steps count as hits where they stopped.
-  stats.capped += count_lanes(active);
-  return select(active, t, result);
+  const MarchLanesSettings s{max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  return sdfreel::march_lanes([&u](const V3x8& p) { return mapScene_lanes(p, u); }, ro, rd, tmin,
+                              tmax, active, eps_per_t, t_before, s, stats);
 }
 
 // hitEps, normalEps and surfaceBias of sdf_morph/march.h in lanes.

@@ -1,5 +1,6 @@
 #include "scenes/water_lily/lanes.h"
 
+#include "scenes/common/march_lanes.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/render.h"
 
@@ -26,43 +27,13 @@ F8 mapDistance8(const V3x8& p, const LilyUniforms& u, float margin, bool leaves)
 }
 
 // march() of render.cpp for the lanes in `active` (primary rays: all pads and flowers, no path
-// before): per-lane t, omega, prev_d and step as masks. Inactive lanes return NO_HIT.
-F8 march8(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, F8 eps_per_t,
-          const LilyUniforms& u, RayStats& stats) {
-  F8 t = tmin;
-  F8 omega = splat(u.naive ? 1.0f : u.step_factor);
-  F8 prev_d = splat(0.0f);
-  F8 step = splat(0.0f);
-  F8 result = splat(NO_HIT);
-  for (int i = 0; i < u.max_steps && any(active); ++i) {
-    const uint64_t n = count_lanes(active);
-    stats.steps += n;
-    stats.sdf_evals += n;
-    const F8 d = mapDistance8(ro + rd * t, u, BOUND_MARGIN, true);
-    const M8 back = active & (omega > 1.0f) & (dm::abs(d) + prev_d < step);
-    t = select(back, t + (prev_d - step), t);
-    step = select(back, prev_d, step);
-    omega = select(back, splat(1.0f), omega);
-    M8 go = active & ~back;
-    const F8 eps = u.naive ? splat(u.hit_eps) : dm::max(MIN_HIT_EPS, eps_per_t * (0.0f + t));
-    const M8 hit = go & (d < eps);
-    result = select(hit, t, result);
-    active &= ~hit;
-    go &= ~hit;
-    const F8 new_step = d * omega;
-    step = select(go, new_step, step);
-    prev_d = select(go, d, prev_d);
-    t = select(go, t + new_step, t);
-    const M8 over = go & (t > tmax);
-    const M8 miss = over & ((omega <= 1.0f) | (t - step + d > tmax));
-    active &= ~miss;
-    const M8 fall_back = over & ~miss;
-    t = select(fall_back, t + (d - step), t);
-    step = select(fall_back, d, step);
-    omega = select(fall_back, splat(1.0f), omega);
-  }
-  stats.capped += count_lanes(active);
-  return select(active, t, result);
+// before).
+F8 march_lanes(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, F8 eps_per_t,
+               const LilyUniforms& u, RayStats& stats) {
+  const MarchLanesSettings s{u.max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  return sdfreel::march_lanes(
+      [&u](const V3x8& p) { return mapDistance8(p, u, BOUND_MARGIN, true); }, ro, rd, tmin, tmax,
+      active, eps_per_t, splat(0.0f), s, stats);
 }
 
 }  // namespace
@@ -79,7 +50,8 @@ void radiancePacket(const RayPacket& rays, const LilyUniforms& u, glm::vec3* out
     active[i] = i < rays.count && spans[i].t0 < spans[i].t1 ? -1 : 0;
   }
   F8 t = splat(NO_HIT);
-  if (any(active)) t = march8(V3x8(rays.origin), rays.dir, t0, t1, active, eps_per_t, u, stats);
+  if (any(active))
+    t = march_lanes(V3x8(rays.origin), rays.dir, t0, t1, active, eps_per_t, u, stats);
   for (int i = 0; i < rays.count; ++i)
     out[i] = radianceAfterMarch(rays.ray(i), spans[i], t[i], u, stats);
 }
