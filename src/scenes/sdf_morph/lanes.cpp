@@ -1,6 +1,6 @@
 #include "scenes/sdf_morph/lanes.h"
 
-#include "scenes/common/march_lanes.h"
+#include "scenes/common/relaxed_march.h"
 #include "scenes/sdf_morph/environment.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
@@ -20,7 +20,7 @@ F8 mapScene_lanes(const V3x8& p, const MorphUniforms& u) {
 // march() of sdf_morph/render.cpp for the lanes in `active`, `max_steps` at most.
 F8 march_lanes(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, int max_steps,
                F8 eps_per_t, F8 t_before, const MorphUniforms& u, RayStats& stats) {
-  const MarchLanesSettings s{max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  const RelaxedMarchSettings s{max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
   return sdfreel::march_lanes([&u](const V3x8& p) { return mapScene_lanes(p, u); }, ro, rd, tmin,
                               tmax, active, eps_per_t, t_before, s, stats);
 }

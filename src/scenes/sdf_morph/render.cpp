@@ -1,5 +1,6 @@
 #include "scenes/sdf_morph/render.h"
 
+#include "scenes/common/relaxed_march.h"
 #include "scenes/sdf_morph/environment.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
@@ -31,37 +32,9 @@ constexpr float FLOOR_FADE_END = 20.0f;   // ... into the backdrop (a cyclorama 
 // The naive preset: plain steps and a fixed world-space threshold u.hit_eps.
 float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_steps, float eps_per_t,
             float t_before, const MorphUniforms& u, RayStats& stats) {
-  float t = tmin;
-  float omega = u.naive ? 1.0f : u.step_factor;
-  float prev_d = 0.0f;
-  float step = 0.0f;
-  for (int i = 0; i < max_steps; ++i) {
-    stats.steps += 1;
-    const float d = mapScene(ro + rd * t, u, stats);
-    if (omega > 1.0f && dm::abs(d) + prev_d < step) {
-      t += prev_d - step;  // back to the previous point plus a plain step
-      step = prev_d;
-      omega = 1.0f;
-      continue;
-    }
-    const float eps = u.naive ? u.hit_eps : dm::max(MIN_HIT_EPS, eps_per_t * (t_before + t));
-    // An eye inside the object sees d < 0 at once: a hit at tmin
-    // (tests/hard_cases/sdf_morph/inside_object).
-    if (d < eps) return t;
-    step = d * omega;
-    prev_d = d;
-    t += step;
-    if (t > tmax) {
-      // Only a plain step may conclude "nothing before tmax": a relaxed one may have jumped
-      // over a surface just in front of it (the pedestal's foot before the floor).
-      if (omega <= 1.0f || t - step + d > tmax) return NO_HIT;
-      t += d - step;
-      step = d;
-      omega = 1.0f;
-    }
-  }
-  stats.capped += 1;
-  return t;
+  const RelaxedMarchSettings s{max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  return relaxed_march([&](const vec3& p) { return mapScene(p, u, stats); }, ro, rd, tmin, tmax,
+                       eps_per_t, t_before, s, stats);
 }
 
 float schlick(float cos_theta, float f0) {

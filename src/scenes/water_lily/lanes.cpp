@@ -1,6 +1,6 @@
 #include "scenes/water_lily/lanes.h"
 
-#include "scenes/common/march_lanes.h"
+#include "scenes/common/relaxed_march.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/render.h"
 
@@ -30,7 +30,7 @@ F8 mapDistance8(const V3x8& p, const LilyUniforms& u, float margin, bool leaves)
 // before).
 F8 march_lanes(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, F8 eps_per_t,
                const LilyUniforms& u, RayStats& stats) {
-  const MarchLanesSettings s{u.max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  const RelaxedMarchSettings s{u.max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
   return sdfreel::march_lanes(
       [&u](const V3x8& p) { return mapDistance8(p, u, BOUND_MARGIN, true); }, ro, rd, tmin, tmax,
       active, eps_per_t, splat(0.0f), s, stats);

@@ -1,5 +1,6 @@
 #include "scenes/water_lily/render.h"
 
+#include "scenes/common/relaxed_march.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/look.h"
 #include "sdf/det_math.h"
@@ -77,34 +78,9 @@ float surfaceBias(float eps) {
 // a hit where it stopped (stats.capped). Returns t or NO_HIT.
 float march(const vec3& ro, const vec3& rd, float tmin, float tmax, int max_steps, float eps_per_t,
             float t_before, bool leaves, const LilyUniforms& u, RayStats& stats) {
-  float t = tmin;
-  float omega = u.naive ? 1.0f : u.step_factor;
-  float prev_d = 0.0f;
-  float step = 0.0f;
-  for (int i = 0; i < max_steps; ++i) {
-    stats.steps += 1;
-    const float d = mapScene(ro + rd * t, leaves, u, stats);
-    if (omega > 1.0f && dm::abs(d) + prev_d < step) {
-      t += prev_d - step;
-      step = prev_d;
-      omega = 1.0f;
-      continue;
-    }
-    const float eps = u.naive ? u.hit_eps : dm::max(MIN_HIT_EPS, eps_per_t * (t_before + t));
-    // An eye inside a petal sees d < 0 at once: a hit at tmin (hard case inside_petal).
-    if (d < eps) return t;
-    step = d * omega;
-    prev_d = d;
-    t += step;
-    if (t > tmax) {
-      if (omega <= 1.0f || t - step + d > tmax) return NO_HIT;
-      t += d - step;
-      step = d;
-      omega = 1.0f;
-    }
-  }
-  stats.capped += 1;
-  return t;
+  const RelaxedMarchSettings s{max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
+  return relaxed_march([&](const vec3& p) { return mapScene(p, leaves, u, stats); }, ro, rd, tmin,
+                       tmax, eps_per_t, t_before, s, stats);
 }
 
 vec3 calcNormal(const vec3& p, float e, bool leaves, const LilyUniforms& u, RayStats& stats) {
