@@ -1,6 +1,7 @@
 #include "io/framemd5_reader.h"
 
 #include <cctype>
+#include <charconv>
 #include <sstream>
 #include <vector>
 
@@ -23,18 +24,12 @@ std::vector<std::string> split_commas(const std::string& line) {
   return fields;
 }
 
-// A whole decimal integer (optional minus sign), nothing else; false when it does not fit.
+// A whole decimal integer (optional minus sign), nothing else; false when it does not fit
+// (from_chars reports overflow instead of wrapping).
 bool parse_int(const std::string& s, int64_t& out) {
-  if (s.empty() || s.size() > 19) return false;
-  size_t i = s[0] == '-' ? 1 : 0;
-  if (i == s.size()) return false;
-  int64_t v = 0;
-  for (; i < s.size(); ++i) {
-    if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
-    v = v * 10 + (s[i] - '0');
-  }
-  out = s[0] == '-' ? -v : v;
-  return true;
+  const char* end = s.data() + s.size();
+  const auto [p, ec] = std::from_chars(s.data(), end, out);
+  return !s.empty() && ec == std::errc() && p == end;
 }
 
 bool is_md5(const std::string& s) {

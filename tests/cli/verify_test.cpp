@@ -79,6 +79,8 @@ TEST(VerifyFramemd5, NeitherManifestNorFramemd5IsBadInputAndWritesNothing) {
       {"prose.txt", "these are not hashes\n", "expected a manifest.json"},
       {"short.framemd5", "#hash: MD5\n0, 0, 0, 1, 6912\n", "expected 6 comma-separated fields"},
       {"badmd5.framemd5", "0, 0, 0, 1, 6912, xyz\n", "is not an MD5"},
+      {"huge.framemd5", "0, 0, 99999999999999999999, 1, 6912, 0123456789abcdef0123456789abcdef\n",
+       "must be whole numbers"},
       {"empty.framemd5", "#format: frame checksums\n", "no frame lines"},
       {"sha.framemd5", "#hash: SHA256\n0, 0, 0, 1, 6912, 0123456789abcdef0123456789abcdef\n",
        "is not MD5"},
