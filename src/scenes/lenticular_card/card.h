@@ -22,7 +22,7 @@ struct CardUniforms {
   glm::vec3 light{0.0f, 1.0f, 0.0f};  // unit direction toward the key light, local frame
   float scroll = 0.0f;                // scroll_offset(), print heights in [0, 2)
   float ior = 1.56f, thickness = 1.5f;  // sheet: index of refraction, thickness / lens pitch
-  float gloss = 1.0f, ridge_noise = 0.25f;
+  float gloss = 1.0f, ridge_noise = 0.1f;
   int lenses = 64, views = 16, view_height = 48;  // the print's layout (textures.h)
 };
 

@@ -17,7 +17,7 @@ namespace sdfreel::lenticular_card {
 // How the card looks and moves; the scene parameters of lenticular_card.
 struct CardLook {
   glm::vec3 light_world = glm::vec3(-0.45f, 0.75f, 0.5f);  // toward the key light
-  float ior = 1.56f, thickness = 1.5f, gloss = 1.0f, ridge_noise = 0.25f;
+  float ior = 1.56f, thickness = 1.5f, gloss = 1.0f, ridge_noise = 0.1f;
   double scroll_period = 6.0, scroll_hold = 0.7;  // seconds; share of the period held still
 };
 

@@ -117,7 +117,7 @@ SceneInfo lenticular_card_scene_info() {
       scalar("ior", 1.56, 1.0, 3.0, "the lens sheet's index of refraction"),
       scalar("thickness", 1.5, 0.1, 10.0, "sheet thickness over lens pitch (~ focal length)"),
       scalar("gloss", 1.0, 0.0, 4.0, "scale of the sheet's reflections (0: a bare print)"),
-      scalar("ridge_noise", 0.25, 0.0, 2.0, "strength of the noise normal map on the ridges"),
+      scalar("ridge_noise", 0.1, 0.0, 2.0, "strength of the noise normal map on the ridges"),
       scalar("scroll_period", 6.0, 0.1, 1e6, "seconds from one print to the next"),
       scalar("scroll_hold", 0.7, 0.0, 0.95, "share of the period a print holds still"),
   };
