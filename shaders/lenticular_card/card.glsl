@@ -11,6 +11,7 @@ struct CardUniforms {
   float ior, thickness;
   float gloss, ridge_noise;
   float lenses, views, view_height;
+  int hit_mask;  // MarchSettings::hit_mask (0 or 1)
 };
 uniform CardUniforms u_card;
 uniform sampler2D u_card_print;   // RGBA: the two interlaced prints, linear albedo, stacked
@@ -23,6 +24,7 @@ const float CARD_CENTRE_Y = 0.30;
 const float BASE_HALF_WIDTH = 0.22, BASE_HALF_HEIGHT = 0.03, BASE_HALF_DEPTH = 0.09;
 
 const float CARD_BIG = 3.0e38;
+const float HIT_ID_CARD = 1.0, HIT_ID_STAND = 2.0;
 const float CARD_AMBIENT = 0.25, CARD_KEY = 1.1;
 const float RIDGE_SLOPE = 0.35;
 const float RIDGE_NOISE_ACROSS = 0.0625, RIDGE_NOISE_ALONG = 1.5;
@@ -142,7 +144,9 @@ bool shadeCard(Ray ray, out vec3 colour, out float t) {
   int axis = on_card ? a_card : a_base;
   precise vec3 n = vec3(0.0);
   n[axis] = d[axis] < 0.0 ? 1.0 : -1.0;
-  if (!on_card) {
+  if (u_card.hit_mask != 0) {
+    colour = vec3(on_card ? HIT_ID_CARD : HIT_ID_STAND);
+  } else if (!on_card) {
     colour = matte(WOOD, n, u_card.light);
   } else if (axis == 2 && n.z > 0.0) {
     colour = frontColour(o + d * t, d);

@@ -13,7 +13,8 @@ constexpr float SHADOW_DEPTH = 0.55f;
 
 }  // namespace
 
-glm::vec3 backdrop(const Ray& ray, const glm::vec3& light) {
+glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask) {
+  if (hit_mask) return glm::vec3(0.0f);
   const glm::vec3 wall = dm::mix(WALL_LOW, WALL_HIGH, dm::smoothstep(-0.1f, 0.6f, ray.dir.y));
   if (!(ray.dir.y < 0.0f) || !(ray.origin.y > 0.0f)) return wall;
   const float t = -ray.origin.y / ray.dir.y;

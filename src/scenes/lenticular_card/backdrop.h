@@ -8,6 +8,7 @@
 
 namespace sdfreel::lenticular_card {
 
-glm::vec3 backdrop(const Ray& ray, const glm::vec3& light);
+// hit_mask: 0 (nothing marched here), as MarchSettings::hit_mask asks.
+glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask);
 
 }  // namespace sdfreel::lenticular_card

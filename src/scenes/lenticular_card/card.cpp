@@ -10,6 +10,7 @@ using glm::vec2;
 using glm::vec3;
 
 constexpr float BIG = 3.0e38f;
+constexpr float HIT_ID_CARD = 1.0f, HIT_ID_STAND = 2.0f;
 constexpr float AMBIENT = 0.25f, KEY = 1.1f;
 constexpr float RIDGE_SLOPE = 0.35f;  // the lens profile's normal tilt at a lens edge
 // The noise map is stretched along the lenses (the seed stretches it along y): few cycles along
@@ -123,7 +124,9 @@ bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, v
   const int axis = on_card ? a_card : a_base;
   vec3 n(0.0f);
   n[axis] = d[axis] < 0.0f ? 1.0f : -1.0f;
-  if (!on_card) {
+  if (u.hit_mask) {
+    colour = vec3(on_card ? HIT_ID_CARD : HIT_ID_STAND);
+  } else if (!on_card) {
     colour = matte(WOOD, n, u.light);
   } else if (axis == 2 && n.z > 0.0f) {
     colour = frontColour(o + d * t, d, u, tex);

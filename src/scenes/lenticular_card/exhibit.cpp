@@ -49,13 +49,15 @@ std::vector<ShaderUniform> card_shader_uniforms(const CardUniforms& u) {
       .f("ridge_noise", u.ridge_noise)
       .f("lenses", float(u.lenses))
       .f("views", float(u.views))
-      .f("view_height", float(u.view_height));
+      .f("view_height", float(u.view_height))
+      .flag("hit_mask", u.hit_mask);
   return list.uniforms();
 }
 
 void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrints& prints,
                         const CardLook& look, const FrameContext& ctx) {
-  const CardUniforms u = card_uniforms(model, prints, look, ctx.scene_time);
+  CardUniforms u = card_uniforms(model, prints, look, ctx.scene_time);
+  u.hit_mask = ctx.march.hit_mask;
   const CameraModel cam =
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
   const glm::vec3 forward = ctx.camera.forward;

@@ -44,6 +44,7 @@ class LenticularCardScene : public Scene {
     const double yaw = glm::radians(p.scalar("card_yaw"));
     model_ = glm::mat4(glm::rotate(glm::dmat4(1.0), yaw, glm::dvec3(0.0, 1.0, 0.0)));
     card_ = card_uniforms(model_, *prints_, look_, ctx.scene_time);
+    card_.hit_mask = ctx.march.hit_mask;
   }
   glm::vec3 radiance(const Ray& ray, RayStats&) const override {
     // The plan's two passes in one: the card (nearer than anything of the backdrop) over it.
@@ -52,20 +53,21 @@ class LenticularCardScene : public Scene {
     if (shadeCard(ray, card_, CardTextures{prints_->print.get(), prints_->ridges.get()}, colour,
                   t))
       return colour;
-    return backdrop(ray, light_);
+    return backdrop(ray, light_, card_.hit_mask);
   }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan;
     RayPass back;
     back.name = "backdrop";
     const glm::vec3 light = light_;
-    back.scalar = [light](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
-      colour = backdrop(ray, light);
+    const bool mask = card_.hit_mask;
+    back.scalar = [light, mask](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
+      colour = backdrop(ray, light, mask);
       keep = true;
     };
-    back.packet = [light](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+    back.packet = [light, mask](const RayPacket& rays, RayPassOutput& out, RayStats&) {
       for (int i = 0; i < rays.count; ++i) {
-        out.colour[i] = backdrop(rays.ray(i), light);
+        out.colour[i] = backdrop(rays.ray(i), light, mask);
         out.keep[i] = true;
       }
     };
@@ -74,7 +76,10 @@ class LenticularCardScene : public Scene {
     return plan;
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
-    return UniformList().v3("u_backdrop_light", light_).uniforms();
+    return UniformList()
+        .v3("u_backdrop_light", light_)
+        .flag("u_backdrop_hit_mask", card_.hit_mask)
+        .uniforms();
   }
   std::vector<ShaderTexture> shader_textures() const override {
     return card_shader_textures(*prints_);

@@ -27,7 +27,9 @@ Rgb8Image numbered_view(int v, int w, int h) {
 class InterlaceCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = test::scratch_dir("interlace_command");
+    // A folder of its own per test: ctest runs them in parallel.
+    dir_ = test::scratch_dir(std::string("interlace_") +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     for (int v = 0; v < 3; ++v) {
       views_.push_back(numbered_view(v, 5, 4));
       test::write_file(path("v" + std::to_string(v) + ".ppm"), encode_ppm(views_.back()));
