@@ -1,9 +1,10 @@
 // `sdfreel interlace VIEW... -o PRINT --lpi L --dpi D`: the interlaced image of N views for a
 // real lenticular card (src/scenes/lenticular_card/interlace.h). Views come as files in order or
 // as a printf pattern with --views N. Bad input exits 2 before anything is written.
-#include <CLI/CLI.hpp>
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 #include <string>

@@ -7,7 +7,7 @@ namespace {
 
 const glm::vec3 FLOOR(0.30f, 0.27f, 0.24f), WALL_LOW(0.06f, 0.06f, 0.07f),
     WALL_HIGH(0.015f, 0.018f, 0.025f);
-constexpr float FLOOR_FADE = 4.0f;     // metres: the floor fades into the backdrop
+constexpr float FLOOR_FADE = 4.0f;      // metres: the floor fades into the backdrop
 constexpr float SHADOW_RADIUS = 0.35f;  // the stand's soft contact shadow
 constexpr float SHADOW_DEPTH = 0.55f;
 

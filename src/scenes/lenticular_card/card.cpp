@@ -41,7 +41,8 @@ vec3 environment(const vec3& r) {
 // The sheet's normal: the lens profile across each lens plus the stretched noise map.
 vec3 ridgeNormal(float lens_coord, float across, float y, const CardUniforms& u,
                  const CardTextures& tex) {
-  const glm::vec4 n = sampleBilinear(*tex.ridges, vec2(lens_coord * RIDGE_NOISE_ACROSS, y * RIDGE_NOISE_ALONG));
+  const glm::vec4 n =
+      sampleBilinear(*tex.ridges, vec2(lens_coord * RIDGE_NOISE_ACROSS, y * RIDGE_NOISE_ALONG));
   return normalize3(vec3(across * RIDGE_SLOPE + n.x * u.ridge_noise, n.y * u.ridge_noise, 1.0f));
 }
 
@@ -112,12 +113,12 @@ bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, v
   const vec3 d = to_local_direction(u.world_to_local, ray.dir);
   float t_card = BIG, t_base = BIG;
   int a_card = -1, a_base = -1;
-  const bool card = hitBox(o, d, vec3(0.0f, CARD_CENTRE_Y, 0.0f),
-                           vec3(CARD_HALF_WIDTH, CARD_HALF_HEIGHT, CARD_HALF_THICKNESS), t_card,
-                           a_card);
-  const bool base = hitBox(o, d, vec3(0.0f, BASE_HALF_HEIGHT, 0.0f),
-                           vec3(BASE_HALF_WIDTH, BASE_HALF_HEIGHT, BASE_HALF_DEPTH), t_base,
-                           a_base);
+  const bool card =
+      hitBox(o, d, vec3(0.0f, CARD_CENTRE_Y, 0.0f),
+             vec3(CARD_HALF_WIDTH, CARD_HALF_HEIGHT, CARD_HALF_THICKNESS), t_card, a_card);
+  const bool base =
+      hitBox(o, d, vec3(0.0f, BASE_HALF_HEIGHT, 0.0f),
+             vec3(BASE_HALF_WIDTH, BASE_HALF_HEIGHT, BASE_HALF_DEPTH), t_base, a_base);
   if (!card && !base) return false;
   const bool on_card = card && (!base || t_card <= t_base);
   t = on_card ? t_card : t_base;

@@ -18,9 +18,9 @@ constexpr float BASE_HALF_WIDTH = 0.22f, BASE_HALF_HEIGHT = 0.03f, BASE_HALF_DEP
 
 // Per-frame constants of the card pass.
 struct CardUniforms {
-  glm::mat4 world_to_local{1.0f};  // inverse of the exhibit's model matrix
-  glm::vec3 light{0.0f, 1.0f, 0.0f};  // unit direction toward the key light, local frame
-  float scroll = 0.0f;                // scroll_offset(), print heights in [0, 2)
+  glm::mat4 world_to_local{1.0f};       // inverse of the exhibit's model matrix
+  glm::vec3 light{0.0f, 1.0f, 0.0f};    // unit direction toward the key light, local frame
+  float scroll = 0.0f;                  // scroll_offset(), print heights in [0, 2)
   float ior = 1.56f, thickness = 1.5f;  // sheet: index of refraction, thickness / lens pitch
   float gloss = 1.0f, ridge_noise = 0.1f;
   int lenses = 64, views = 16, view_height = 48;  // the print's layout (textures.h)

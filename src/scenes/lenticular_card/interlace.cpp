@@ -86,8 +86,7 @@ Rgb8Image interlace(const std::vector<Rgb8Image>& views, const InterlaceLayout& 
   return print;
 }
 
-std::vector<Rgb8Image> deinterlace(const Rgb8Image& print, const InterlaceLayout& l, int w,
-                                   int h) {
+std::vector<Rgb8Image> deinterlace(const Rgb8Image& print, const InterlaceLayout& l, int w, int h) {
   // Every view pixel is read from the first print pixel that interlace() filled from it: the
   // same mapping both ways, so the round trip is exact whatever the rounding of the layout.
   if (print.width != print_width(l, w) || print.height != print_height(l, h))
@@ -104,8 +103,9 @@ std::vector<Rgb8Image> deinterlace(const Rgb8Image& print, const InterlaceLayout
   for (int v = 0; v < l.views; ++v)
     for (int c = 0; c < w; ++c) {
       const int x = column_of[size_t(v) * w + c];
-      if (x < 0) throw std::invalid_argument("deinterlace: view " + std::to_string(v) +
-                                             " column " + std::to_string(c) + " is not printed");
+      if (x < 0)
+        throw std::invalid_argument("deinterlace: view " + std::to_string(v) + " column " +
+                                    std::to_string(c) + " is not printed");
       for (int r = 0; r < h; ++r) {
         const uint8_t* from = print.at(x, row_of[r]);
         uint8_t* to = views[v].at(c, r);

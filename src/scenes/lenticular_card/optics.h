@@ -22,9 +22,9 @@ float seen_print_position(float centre, float sin_theta, float ior, float thickn
 // The view that N strips a lens show at sin(theta): N - 1 - (floor(N * (0.5 - e/p tan)) mod N).
 int seen_view(float sin_theta, float ior, float thickness, int views);
 
-// The viewing angle (degrees) where the seen print position crosses k strip widths from the lens
-// centre's strip boundary: sin(theta) = n sin(atan(x)) for tan(theta') = x = (k / N - 0.5 + ...)
-// written out: the angles where the view changes are those with (0.5 - e/p tan') * N integral.
+// The viewing angle (degrees) of strip boundary `boundary` (0 at the lens centre, +-1, +-2 ...
+// outward): where N * (0.5 - e tan(theta')) is integral, i.e. tan(theta') = boundary / (N e) and
+// sin(theta) = n sin(atan(that)). Double and libm: the tests' independent prediction.
 double switch_angle_deg(int boundary, int views, double ior, double thickness);
 
 // The seed's billboard scrolling: the print holds for `hold` of each period, then slides up by

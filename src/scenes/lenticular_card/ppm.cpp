@@ -7,7 +7,8 @@
 namespace sdfreel::lenticular_card {
 
 std::string encode_ppm(const Rgb8Image& img) {
-  std::string out = "P6\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
+  std::string out =
+      "P6\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n255\n";
   out.append(reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size());
   return out;
 }

@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 
 const SceneInfo& scene_of(const ViewSet& set) {
   const SceneInfo* info = find_scene(set.scene);
-  if (!info || !info->make) throw std::runtime_error("lenticular_card: no scene '" + set.scene + "'");
+  if (!info || !info->make)
+    throw std::runtime_error("lenticular_card: no scene '" + set.scene + "'");
   return *info;
 }
 
@@ -41,8 +42,8 @@ FrameContext view_context(const ViewSet& set, const SceneInfo& info, int i) {
 // What a print carries: exposure 1 - exp(-x), then the sRGB curve, rounded to 8 bits.
 uint8_t print_byte(float linear) {
   const float exposed = 1.0f - dm::exp(-dm::max(linear, 0.0f));
-  const float encoded = exposed <= 0.0031308f ? 12.92f * exposed
-                                              : 1.055f * dm::pow(exposed, 1.0f / 2.4f) - 0.055f;
+  const float encoded =
+      exposed <= 0.0031308f ? 12.92f * exposed : 1.055f * dm::pow(exposed, 1.0f / 2.4f) - 0.055f;
   return uint8_t(dm::floor(dm::clamp(encoded, 0.0f, 1.0f) * 255.0f + 0.5f));
 }
 
@@ -115,8 +116,8 @@ Rgb8Image render_view(const ViewSet& set, int i) {
   tbb::parallel_for(0, ctx.height, [&](int y) {
     for (int x = 0; x < ctx.width; ++x)
       for (const glm::vec2& offset : ctx.sample_offsets) {
-        const glm::vec3 dir = primary_ray_dir(ctx.camera, float(x) + offset.x,
-                                              float(y) + offset.y, ctx.width, ctx.height);
+        const glm::vec3 dir = primary_ray_dir(ctx.camera, float(x) + offset.x, float(y) + offset.y,
+                                              ctx.width, ctx.height);
         glm::vec3 colour(0.0f);
         float depth = 1.0f;
         bool keep = false;
@@ -138,8 +139,8 @@ std::vector<Rgb8Image> source_views(const ViewSet& set) {
   const std::string dir = cache_dir();
   std::vector<Rgb8Image> views;
   for (int i = 0; i < set.views; ++i) {
-    const fs::path path = dir.empty() ? fs::path() : fs::path(dir) / "lenticular" /
-                                                         (view_key(set, i) + ".ppm");
+    const fs::path path =
+        dir.empty() ? fs::path() : fs::path(dir) / "lenticular" / (view_key(set, i) + ".ppm");
     Rgb8Image img;
     if (!dir.empty() && read_ppm(path.string(), img) && img.width == set.width &&
         img.height == set.height) {

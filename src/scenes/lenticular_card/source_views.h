@@ -17,13 +17,13 @@
 namespace sdfreel::lenticular_card {
 
 struct ViewSet {
-  std::string scene;       // a registered scene made of ray passes only
-  int views = 16;          // N
+  std::string scene;  // a registered scene made of ray passes only
+  int views = 16;     // N
   int width = 64, height = 48;
-  int samples = 2;         // sub-pixel samples of each view
-  double time = 0.0;       // the scene's TIME, seconds
-  double orbit_deg = 24.0; // the angle between the first and the last view
-  double zoom = 1.0;       // the default camera's field of view divided by this
+  int samples = 2;          // sub-pixel samples of each view
+  double time = 0.0;        // the scene's TIME, seconds
+  double orbit_deg = 24.0;  // the angle between the first and the last view
+  double zoom = 1.0;        // the default camera's field of view divided by this
 };
 
 // The camera of view i.

@@ -59,10 +59,10 @@ TEST_F(InterlaceCommand, WritesAPrintThatDeinterlacesIntoTheViews) {
   const std::vector<Rgb8Image> back = deinterlace(print, layout, 5, 4);
   for (int v = 0; v < 3; ++v) EXPECT_EQ(back[v].rgb, views_[v].rgb) << "view " << v;
   // The pattern form reads the same files.
-  ASSERT_EQ(test::run_sdfreel("interlace --pattern v%d.ppm --views 3 -o p.ppm --lpi 10 --dpi 35",
-                              dir_)
-                .status,
-            0);
+  ASSERT_EQ(
+      test::run_sdfreel("interlace --pattern v%d.ppm --views 3 -o p.ppm --lpi 10 --dpi 35", dir_)
+          .status,
+      0);
   EXPECT_EQ(test::read_file(path("p.ppm")), test::read_file(path("out.ppm")));
 }
 

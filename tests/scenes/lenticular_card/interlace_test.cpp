@@ -1,8 +1,8 @@
 // Interlacing then de-interlacing gives back every view exactly, for whole and fractional print
 // pixels per lens, with and without stretched rows; and the strips lie where the layout says.
-#include <gtest/gtest.h>
-
 #include "scenes/lenticular_card/interlace.h"
+
+#include <gtest/gtest.h>
 
 namespace sdfreel::lenticular_card {
 namespace {
@@ -28,8 +28,8 @@ void expect_round_trip(const InterlaceLayout& layout, int w, int h) {
   const std::vector<Rgb8Image> back = deinterlace(print, layout, w, h);
   ASSERT_EQ(back.size(), views.size());
   for (size_t v = 0; v < views.size(); ++v)
-    EXPECT_EQ(back[v].rgb, views[v].rgb) << "view " << v << ", " << layout.pixels_per_lens
-                                         << " pixels per lens";
+    EXPECT_EQ(back[v].rgb, views[v].rgb)
+        << "view " << v << ", " << layout.pixels_per_lens << " pixels per lens";
 }
 
 TEST(Interlace, RoundTripGivesBackEveryView) {

@@ -2,13 +2,14 @@
 // switches at the angles sin(theta) = n sin(atan(b / (N e))) predicts (computed here in double,
 // apart from the float shading path), the card seen edge-on or from behind stays finite and
 // clean, and the scroll offset holds and slides as documented, also at TIME 1e6.
+#include "scenes/lenticular_card/optics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "scenes/lenticular_card/card.h"
 #include "scenes/lenticular_card/exhibit.h"
-#include "scenes/lenticular_card/optics.h"
 
 namespace sdfreel::lenticular_card {
 namespace {
@@ -118,10 +119,10 @@ TEST(LenticularOptics, EdgeOnGrazingAndBehindStayFiniteAndClean) {
 
 TEST(LenticularOptics, ScrollHoldsThenSlidesAndKeepsItsPhaseAtTime1e6) {
   EXPECT_EQ(scroll_offset(0.0, 6.0, 0.7), 0.0);
-  EXPECT_EQ(scroll_offset(4.1, 6.0, 0.7), 0.0);                // holding print A
-  EXPECT_NEAR(scroll_offset(5.1, 6.0, 0.7), 0.5, 1e-12);        // halfway through the slide
-  EXPECT_NEAR(scroll_offset(6.5, 6.0, 0.7), 1.0, 1e-12);        // holding print B
-  EXPECT_NEAR(scroll_offset(12.5, 6.0, 0.7), 0.0, 1e-12);       // back to A
+  EXPECT_EQ(scroll_offset(4.1, 6.0, 0.7), 0.0);            // holding print A
+  EXPECT_NEAR(scroll_offset(5.1, 6.0, 0.7), 0.5, 1e-12);   // halfway through the slide
+  EXPECT_NEAR(scroll_offset(6.5, 6.0, 0.7), 1.0, 1e-12);   // holding print B
+  EXPECT_NEAR(scroll_offset(12.5, 6.0, 0.7), 0.0, 1e-12);  // back to A
   EXPECT_NEAR(scroll_offset(1e6 + 0.5, 6.0, 0.7), scroll_offset(4.0 + 0.5, 6.0, 0.7), 1e-6);
 }
 

@@ -1,13 +1,14 @@
 // Source views are deterministic, made once: the first call renders and stores each view under
 // the cache folder by its content key, later calls read the stored bytes; a different camera or
 // size is a different key.
+#include "scenes/lenticular_card/source_views.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 
 #include "scenes/lenticular_card/ppm.h"
-#include "scenes/lenticular_card/source_views.h"
 #include "support/scratch.h"
 
 namespace sdfreel::lenticular_card {
