@@ -50,7 +50,10 @@ TEST(ResolvedRayPass, SameBitsAsThePlanRunOncePerSample) {
     EXPECT_EQ(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)), 0)
         << info.name;
     EXPECT_EQ(a.sdf_evals, b.sdf_evals) << info.name;
-    EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    // A scene without marches (lenticular_card meets its boxes analytically) counts none.
+    if (!scene->distance_functions().empty()) {
+      EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    }
   }
 }
 
