@@ -108,7 +108,7 @@ void Canvas::write_png(const std::string& path) const {
   for (size_t i = 0; i < px_.size(); ++i)
     bytes[i] = uint8_t(std::lround(std::clamp(px_[i], 0.0f, 1.0f) * 255.0f));
   try {
-    const std::vector<unsigned char> png = encode_png(w_, h_, 3, 8, bytes.data(), 6);
+    const std::vector<unsigned char> png = encode_png(w_, h_, 3, 8, bytes.data(), {6, -1, 0});
     write_file_atomic(path, png.data(), png.size());
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write the plot " + path + ": " + e.what());

@@ -17,9 +17,11 @@ void check_size(const std::string& path, int width, int height, size_t values, i
                              ": image is empty or its size is inconsistent");
 }
 
-// Frame writing sits on the render loop. Measured on rendered frames (docs/startup-and-io.md):
-// zlib level 1 with the "up" row filter is the fastest setting and about as small as any.
-constexpr int kPngFilterUp = 0x20;  // PNG_FILTER_UP in png.h
+// Chosen by measurement on rendered frames (docs/startup-and-io.md, tests/tools/png_levels.cpp).
+// Huffman coding only (no match search) after the Paeth filter: on 480x270 and 1280x720 lantern
+// frames 1.2-1.4x less CPU than zlib level 1 with the "up" filter (the old setting) and 7%
+// smaller files; the match search of levels 1-6 costs 1.4-4x the time for 1-10% smaller files.
+constexpr PngCompression kFramePng{1, 0x80, 2};  // level 1, PNG_FILTER_PAETH, Z_HUFFMAN_ONLY
 
 }  // namespace
 
@@ -39,8 +41,7 @@ void write_png16_atomic(const std::string& path, const ImageRGB16& display) {
   check_size(path, display.width, display.height, display.pixels.size(), 3);
   std::vector<unsigned char> bytes;
   try {
-    bytes = encode_png(display.width, display.height, 3, 16, display.pixels.data(),
-                       kPngFrameZlibLevel, kPngFilterUp);
+    bytes = encode_png(display.width, display.height, 3, 16, display.pixels.data(), kFramePng);
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write " + path + ": " + e.what());
   }

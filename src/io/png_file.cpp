@@ -47,12 +47,13 @@ int color_type_of(int channels) {
 
 // Returns false (message in `errors`) on a libpng error.
 bool write_png_rows(png_structp png, png_infop info, int width, int height, int channels,
-                    int bit_depth, int zlib_level, int filter, png_bytep* rows,
+                    int bit_depth, const PngCompression& how, png_bytep* rows,
                     std::vector<unsigned char>* out) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, out, append_bytes, no_flush);
-  png_set_compression_level(png, zlib_level);
-  if (filter >= 0) png_set_filter(png, PNG_FILTER_TYPE_BASE, filter);
+  png_set_compression_level(png, how.zlib_level);
+  png_set_compression_strategy(png, how.strategy);
+  if (how.filter >= 0) png_set_filter(png, PNG_FILTER_TYPE_BASE, how.filter);
   png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bit_depth,
                color_type_of(channels), PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
                PNG_FILTER_TYPE_BASE);
@@ -95,7 +96,7 @@ bool read_png_rows(png_structp png, png_infop info, std::FILE* file, int channel
 }  // namespace
 
 std::vector<unsigned char> encode_png(int width, int height, int channels, int bit_depth,
-                                      const void* samples, int zlib_level, int filter) {
+                                      const void* samples, const PngCompression& how) {
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4 ||
       (bit_depth != 8 && bit_depth != 16))
     throw std::runtime_error("PNG: bad image size or bit depth");
@@ -108,8 +109,8 @@ std::vector<unsigned char> encode_png(int width, int height, int channels, int b
   PngErrors errors;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
-  const bool ok = info && write_png_rows(png, info, width, height, channels, bit_depth, zlib_level,
-                                         filter, rows.data(), &out);
+  const bool ok =
+      info && write_png_rows(png, info, width, height, channels, bit_depth, how, rows.data(), &out);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw std::runtime_error(std::string("PNG encoding failed: ") + errors.message);
   return out;

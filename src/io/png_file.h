@@ -8,16 +8,19 @@
 
 namespace sdfreel {
 
-// zlib level and row filter of frame PNGs, chosen by measurement (docs/startup-and-io.md): level 1
-// with the "up" filter is the fastest and, on rendered frames, about as small as level 6.
-constexpr int kPngFrameZlibLevel = 1;
+// How to compress: zlib level (0-9), row filter mask (PNG_FILTER_* of png.h; -1: libpng's
+// adaptive default) and zlib strategy (0 default, 1 filtered, 2 Huffman only, 3 RLE).
+struct PngCompression {
+  int zlib_level = 1;
+  int filter = 0x20;  // PNG_FILTER_UP
+  int strategy = 0;
+};
 
 // Encodes `height` rows of `width` pixels with `channels` interleaved samples (1 gray, 3 RGB, 4
 // RGBA), 8-bit (`bit_depth` 8, uint8_t samples) or 16-bit (uint16_t samples in host order), into
-// PNG bytes. `filter` is a PNG_FILTER_* mask (0 = libpng's default). Throws std::runtime_error.
+// PNG bytes. Throws std::runtime_error.
 std::vector<unsigned char> encode_png(int width, int height, int channels, int bit_depth,
-                                      const void* samples, int zlib_level = kPngFrameZlibLevel,
-                                      int filter = -1);
+                                      const void* samples, const PngCompression& how = {});
 
 struct PngPixels {
   int width = 0, height = 0;
