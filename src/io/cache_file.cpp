@@ -84,6 +84,27 @@ std::optional<std::vector<char>> read_verified(const std::filesystem::path& path
   return result;
 }
 
+// Files of one content key start with the same name, whatever the build: a new build replaces
+// the files of older ones instead of piling up (27 MB each for the lanterns).
+std::string content_prefix(const std::string& key) {
+  char prefix[24];
+  std::snprintf(prefix, sizeof prefix, "%016llx",
+                static_cast<unsigned long long>(checksum64(key.data(), key.size())));
+  return prefix;
+}
+
+// Removes the files of `path`'s content key written by other builds.
+void remove_other_builds(const std::filesystem::path& path) {
+  const std::string mine = path.filename().string();
+  const std::string prefix = mine.substr(0, mine.find('-') + 1);
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(path.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name != mine && name.rfind(prefix, 0) == 0 && name.size() == mine.size())
+      std::filesystem::remove(entry.path(), ec);
+  }
+}
+
 }  // namespace
 
 uint64_t checksum64(const void* data, size_t size) {
@@ -106,10 +127,10 @@ uint64_t checksum64(const void* data, size_t size) {
 std::filesystem::path cache_file_path(const std::string& kind, const std::string& key) {
   const std::filesystem::path dir = cache_dir();
   if (dir.empty()) return {};
-  const std::string k = full_key(key);
-  char name[32];
-  std::snprintf(name, sizeof name, "%016llx.bin",
-                static_cast<unsigned long long>(checksum64(k.data(), k.size())));
+  const std::string& build = build_id();
+  char name[48];
+  std::snprintf(name, sizeof name, "%s-%016llx.bin", content_prefix(key).c_str(),
+                static_cast<unsigned long long>(checksum64(build.data(), build.size())));
   return dir / kind / name;
 }
 
@@ -135,6 +156,7 @@ bool write_cache_file(const std::string& kind, const std::string& key,
     const FaultInjectionPause pause;
     std::filesystem::create_directories(path.parent_path());
     write_file_atomic(path.string(), bytes.data(), bytes.size());
+    remove_other_builds(path);
     return true;
   } catch (const std::exception&) {
     return false;

@@ -11,7 +11,8 @@
 
 namespace sdfreel {
 
-// cache_dir()/<kind>/<hash of the full key>.bin, or empty when there is no cache folder.
+// cache_dir()/<kind>/<hash of key>-<hash of build_id()>.bin, or empty when there is no cache
+// folder. Writing a key's file removes that key's files of other builds.
 std::filesystem::path cache_file_path(const std::string& kind, const std::string& key);
 
 std::optional<std::vector<char>> read_cache_file(const std::string& kind, const std::string& key);

@@ -76,6 +76,22 @@ TEST(CacheFile, RoundTripsUnderItsKeyOnly) {
   EXPECT_EQ(files, 1);
 }
 
+TEST(CacheFile, ANewBuildReplacesTheFilesOfOlderBuildsOfItsKey) {
+  ScopedEnv dir("SDFREEL_CACHE_DIR", test::scratch_dir("cache-builds").c_str());
+  const fs::path mine = cache_file_path("textures", "k");
+  const std::string name = mine.filename().string();
+  const fs::path older = mine.parent_path() / (name.substr(0, name.find('-')) +
+                                               "-0123456789abcdef.bin");  // another build's
+  ASSERT_TRUE(write_cache_file("textures", "other key", bytes_of("x")));
+  const fs::path other_key = cache_file_path("textures", "other key");
+  overwrite(older, bytes_of("an older build's textures"));
+  ASSERT_TRUE(fs::exists(older));
+  ASSERT_TRUE(write_cache_file("textures", "k", bytes_of("y")));
+  EXPECT_FALSE(fs::exists(older));
+  EXPECT_TRUE(fs::exists(mine));
+  EXPECT_TRUE(fs::exists(other_key));
+}
+
 TEST(CacheFile, DamagedFilesReadAsMissing) {
   ScopedEnv dir("SDFREEL_CACHE_DIR", test::scratch_dir("cache-damaged").c_str());
   std::vector<char> payload(100000);
