@@ -1,9 +1,6 @@
 // `sdfreel interlace VIEW... -o PRINT --lpi L --dpi D`: the interlaced image of N views for a
 // real lenticular card (src/scenes/lenticular_card/interlace.h). Views come as files in order or
 // as a printf pattern with --views N. Bad input exits 2 before anything is written.
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
@@ -12,7 +9,9 @@
 
 #include "cli/commands_impl.h"
 #include "io/atomic_file.h"
+#include "io/png_file.h"
 #include "scenes/lenticular_card/interlace.h"
+#include "scenes/lenticular_card/ppm.h"
 
 namespace sdfreel {
 namespace {
@@ -26,20 +25,32 @@ struct InterlaceOptions {
   double lpi = 0.0, dpi = 0.0;
 };
 
+bool has_suffix(const std::string& name, const std::string& suffix) {
+  return name.size() >= suffix.size() &&
+         name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Views and prints are 8-bit RGB: PNG (what sdfreel writes) or binary PPM.
+bool known_format(const std::string& path) {
+  return has_suffix(path, ".png") || has_suffix(path, ".ppm");
+}
+
 Rgb8Image read_view(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw UsageError(path + ": cannot read the view: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels < 3 && spec.nchannels != 1)
-    throw UsageError(path + ": expected a grey or RGB image, found " +
-                     std::to_string(spec.nchannels) + " channels");
-  Rgb8Image img(spec.width, spec.height);
-  std::vector<uint8_t> all(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, all.data()))
-    throw UsageError(path + ": cannot read the view: " + in->geterror());
-  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
-    for (int c = 0; c < 3; ++c)
-      img.rgb[i * 3 + c] = all[i * spec.nchannels + (spec.nchannels == 1 ? 0 : c)];
+  if (!known_format(path)) throw UsageError(path + ": views are .png or .ppm files");
+  Rgb8Image img;
+  if (has_suffix(path, ".ppm")) {
+    if (!lenticular_card::read_ppm(path, img))
+      throw UsageError(path + ": cannot read the view (expected a binary P6 PPM, maxval 255)");
+    return img;
+  }
+  PngPixels png;
+  try {
+    png = read_png(path, 3);
+  } catch (const std::exception& e) {
+    throw UsageError(std::string("cannot read the view: ") + e.what());
+  }
+  img = Rgb8Image(png.width, png.height);
+  for (size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = uint8_t(png.samples[i] / 257);
   return img;
 }
 
@@ -65,17 +76,13 @@ std::vector<std::string> view_paths(const InterlaceOptions& o) {
 }
 
 void write_print(const std::string& path, const Rgb8Image& print) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw UsageError(path + ": no image format for this file name: " + OIIO::geterror());
-  OIIO::ImageSpec spec(print.width, print.height, 3, OIIO::TypeDesc::UINT8);
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  if (!out->supports("ioproxy")) throw UsageError(path + ": this format cannot be written here");
-  out->set_ioproxy(&memory);
-  if (!(out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, print.rgb.data()) &&
-        out->close()))
-    throw RenderError("cannot write " + path + ": " + out->geterror());
-  out.reset();
+  if (has_suffix(path, ".ppm")) {
+    const std::string bytes = lenticular_card::encode_ppm(print);
+    write_file_atomic(path, bytes.data(), bytes.size());
+    return;
+  }
+  const std::vector<unsigned char> bytes =
+      encode_png(print.width, print.height, 3, 8, print.rgb.data(), PngCompression{9, -1, 0});
   write_file_atomic(path, bytes.data(), bytes.size());
 }
 
@@ -83,8 +90,8 @@ int run_interlace(const InterlaceOptions& o) {
   const std::vector<std::string> paths = view_paths(o);
   if (paths.size() < 2) throw UsageError("interlace: needs at least 2 views");
   // Check the output's format before reading anything big: a bad name writes nothing.
-  if (!OIIO::ImageOutput::create(o.output))
-    throw UsageError(o.output + ": no image format for this file name");
+  if (!known_format(o.output))
+    throw UsageError(o.output + ": no image format for this file name (.png or .ppm)");
   std::vector<Rgb8Image> views;
   for (const std::string& p : paths) {
     views.push_back(read_view(p));
@@ -121,7 +128,7 @@ void add_interlace_command(CLI::App& app, int& status) {
   cmd->add_option("--dpi", o->dpi, "print resolution, dots per inch")
       ->required()
       ->check(CLI::Range(1e-3, 1e6));
-  cmd->add_option("-o,--output", o->output, "the interlaced image (.png, .tif, ...)")->required();
+  cmd->add_option("-o,--output", o->output, "the interlaced image (.png or .ppm)")->required();
   cmd->callback([o, &status] { status = run_interlace(*o); });
 }
 

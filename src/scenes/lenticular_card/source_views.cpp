@@ -1,14 +1,12 @@
 #include "scenes/lenticular_card/source_views.h"
 
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
-#include "render/cache_dir.h"
+#include "io/cache_file.h"
 #include "render/quality.h"
 #include "scenes/lenticular_card/ppm.h"
 #include "scenes/registry.h"
@@ -16,8 +14,6 @@
 
 namespace sdfreel::lenticular_card {
 namespace {
-
-namespace fs = std::filesystem;
 
 const SceneInfo& scene_of(const ViewSet& set) {
   const SceneInfo* info = find_scene(set.scene);
@@ -57,22 +53,6 @@ void check_plan(const FramePlan& plan, const std::string& scene) {
   }
 }
 
-void write_atomic(const fs::path& path, const std::string& bytes) {
-  std::error_code ec;
-  fs::create_directories(path.parent_path(), ec);
-  const fs::path temp = path.string() + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream f(temp, std::ios::binary);
-    f.write(bytes.data(), std::streamsize(bytes.size()));
-    if (!f.flush()) {
-      fs::remove(temp, ec);
-      return;
-    }
-  }
-  fs::rename(temp, path, ec);
-  if (ec) fs::remove(temp, ec);
-}
-
 }  // namespace
 
 CameraPose view_pose(const ViewSet& set, int i) {
@@ -93,14 +73,11 @@ std::string view_key(const ViewSet& set, int i) {
   char text[512];
   std::snprintf(text, sizeof text,
                 "%s view %d/%d %dx%d s%d t%.17g pos %.17g %.17g %.17g at %.17g %.17g %.17g fov "
-                "%.17g roll %.17g build %016llx",
+                "%.17g roll %.17g",
                 set.scene.c_str(), i, set.views, set.width, set.height, set.samples, set.time,
                 p.position.x, p.position.y, p.position.z, p.target.x, p.target.y, p.target.z,
-                p.fov_deg, p.roll_deg, (unsigned long long)build_id());
-  char hex[40];
-  std::snprintf(hex, sizeof hex, "%s-%016llx", set.scene.c_str(),
-                (unsigned long long)content_key(text));
-  return hex;
+                p.fov_deg, p.roll_deg);
+  return text;
 }
 
 Rgb8Image render_view(const ViewSet& set, int i) {
@@ -136,19 +113,18 @@ Rgb8Image render_view(const ViewSet& set, int i) {
 }
 
 std::vector<Rgb8Image> source_views(const ViewSet& set) {
-  const std::string dir = cache_dir();
   std::vector<Rgb8Image> views;
   for (int i = 0; i < set.views; ++i) {
-    const fs::path path =
-        dir.empty() ? fs::path() : fs::path(dir) / "lenticular" / (view_key(set, i) + ".ppm");
-    Rgb8Image img;
-    if (!dir.empty() && read_ppm(path.string(), img) && img.width == set.width &&
-        img.height == set.height) {
-      views.push_back(std::move(img));
-      continue;
+    const std::string key = view_key(set, i);
+    Rgb8Image img(set.width, set.height);
+    const auto cached = read_cache_file("lenticular", key);
+    if (cached && cached->size() == img.rgb.size()) {
+      std::copy(cached->begin(), cached->end(), img.rgb.begin());
+    } else {
+      img = render_view(set, i);
+      write_cache_file("lenticular", key, std::vector<char>(img.rgb.begin(), img.rgb.end()));
     }
-    views.push_back(render_view(set, i));
-    if (!dir.empty()) write_atomic(path, encode_ppm(views.back()));
+    views.push_back(std::move(img));
   }
   return views;
 }

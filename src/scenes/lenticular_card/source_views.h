@@ -29,14 +29,15 @@ struct ViewSet {
 // The camera of view i.
 CameraPose view_pose(const ViewSet& set, int i);
 
-// The cache key of view i: scene, camera, size, samples, time and the build (cache_dir.h).
+// The cache key of view i: scene, camera, size, samples and time (io/cache_file.h adds the
+// build).
 std::string view_key(const ViewSet& set, int i);
 
 // View i rendered now (no cache).
 Rgb8Image render_view(const ViewSet& set, int i);
 
-// All views: each read from the cache (cache_dir()/lenticular/<key>.ppm) when there, else
-// rendered and stored (atomically; a cache that cannot be written is skipped, not an error).
+// All views: each read from the cache (io/cache_file.h, kind "lenticular": checked on read, so a
+// damaged file is rendered again) when there, else rendered and stored (best effort).
 std::vector<Rgb8Image> source_views(const ViewSet& set);
 
 }  // namespace sdfreel::lenticular_card

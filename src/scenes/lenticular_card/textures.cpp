@@ -3,7 +3,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "render/cache_dir.h"
+#include "io/cache_file.h"
 #include "scenes/common/periodic_fbm.h"
 #include "sdf/det_math.h"
 
@@ -55,7 +55,7 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
   out.view_height = a[0].height;
   out.print = print;
   out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED));
-  out.key = content_key(bytes) | 1ull;  // never 0 ("unknown")
+  out.key = checksum64(bytes.data(), bytes.size()) | 1ull;  // never 0 ("unknown")
   return out;
 }
 

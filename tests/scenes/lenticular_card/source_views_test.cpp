@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "scenes/lenticular_card/ppm.h"
+#include "io/cache_file.h"
 #include "support/scratch.h"
 
 namespace sdfreel::lenticular_card {
@@ -24,13 +24,17 @@ TEST(SourceViews, RenderedOnceThenReadFromTheCacheByContentKey) {
   ASSERT_EQ(first.size(), 3u);
   EXPECT_EQ(first[1].rgb, render_view(set, 1).rgb) << "a view is a pure function of its key";
   EXPECT_NE(first[0].rgb, first[2].rgb) << "the views see the scene from different angles";
-  const fs::path stored = fs::path(dir) / "lenticular" / (view_key(set, 1) + ".ppm");
+  const fs::path stored = cache_file_path("lenticular", view_key(set, 1));
   ASSERT_TRUE(fs::exists(stored));
   // A stored file stands for its view: replace it and the next call returns the replacement.
   Rgb8Image marked = first[1];
   marked.rgb[0] ^= 0xff;
-  test::write_file(stored.string(), encode_ppm(marked));
+  ASSERT_TRUE(write_cache_file("lenticular", view_key(set, 1),
+                               std::vector<char>(marked.rgb.begin(), marked.rgb.end())));
   EXPECT_EQ(source_views(set)[1].rgb, marked.rgb);
+  // A damaged file is not trusted: the view is rendered again.
+  test::write_file(stored.string(), "not a cache file");
+  EXPECT_EQ(source_views(set)[1].rgb, first[1].rgb);
   ViewSet other = set;
   other.orbit_deg = 21.0;  // moves every view but the middle one
   EXPECT_NE(view_key(other, 0), view_key(set, 0));
