@@ -1,0 +1,10 @@
+// The hall's boxes (mesh pass "hall" of src/scenes/museum/museum.cpp): instance data is the
+// albedo (rgb) and the material code (w) of hall_layout.h.
+#include "common/mesh_fragment.glsl"
+#include "museum/lighting.glsl"
+
+vec4 shade(MeshFragment f) {
+  return vec4(hall_radiance(f.world_position, f.world_normal, f.instance_data.rgb,
+                            f.instance_data.w),
+              1.0);
+}

@@ -1,0 +1,7 @@
+// museum: the sky ray pass (what the window shows), the twin of sky_pass() in
+// src/scenes/museum/museum.cpp. The hall, the exhibits and the air are other passes of the plan:
+// hall.frag, sdf_exhibit.frag, occlusion.glsl, composite.glsl.
+#include "common/sample_loop.glsl"
+#include "museum/lighting.glsl"
+
+vec3 radiance(Ray ray, inout RayStats stats) { return sky(ray.dir); }
