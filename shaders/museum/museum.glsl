@@ -4,4 +4,6 @@
 #include "common/sample_loop.glsl"
 #include "museum/lighting.glsl"
 
-vec3 radiance(Ray ray, inout RayStats stats) { return sky(ray.dir); }
+uniform float u_hit_mask;  // 1: the sky's hit id (0) instead of radiance
+
+vec3 radiance(Ray ray, inout RayStats stats) { return u_hit_mask > 0.5 ? vec3(0.0) : sky(ray.dir); }

@@ -76,6 +76,7 @@ void main() {
   precise vec3 r = to_world(dl - 2.0 * dm_dot(n, dl) * n);
   precise float shadow = sun_visibility(world_hit + world_n * 0.002);
   frag_color = vec4(shadeObjectLit(n, dl, sample_probe(r), shadow, 1.0, u_morph), 1.0);
+  if (u_morph.hit_mask != 0) frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
   precise float view_depth = dm_dot(world_hit - u_camera_origin, u_camera_forward);
   gl_FragDepth = window_depth(view_depth);
 }

@@ -70,6 +70,19 @@ ImagePass composite_pass(const CompositeFrame& f, const std::string& scene) {
 
 }  // namespace
 
+ImagePass copy_pass(const std::string& from, const std::string& to) {
+  ImagePass p;
+  p.name = "copy " + from;
+  p.inputs = {{from, "u_source"}};
+  p.output = to;
+  p.shader = "museum/copy.glsl";
+  p.pixel = [](const ImageInputs& in, int x, int y) {
+    const float* v = in[0].at(x, y);
+    return glm::vec4(v[0], v[1], v[2], v[3]);
+  };
+  return p;
+}
+
 void add_atmosphere_passes(FramePlan& plan, const Atmosphere& a, const FrameContext& ctx,
                            const CameraModel& cam, const std::string& scene) {
   plan.targets.push_back({OCCLUSION, TargetKind::Colour, glm::vec4(0.0f)});

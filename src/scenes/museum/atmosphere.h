@@ -23,6 +23,9 @@ struct Atmosphere {
   float rays_strength = 0.35f;
 };
 
+// An image pass copying `from` to `to` (the hit-mask frame: the ids without air).
+ImagePass copy_pass(const std::string& from, const std::string& to);
+
 // Appends the occlusion, rays and composite passes: `scene` and DEPTH_TARGET in, COLOUR_TARGET out.
 void add_atmosphere_passes(FramePlan& plan, const Atmosphere& a, const FrameContext& ctx,
                            const CameraModel& cam, const std::string& scene);

@@ -37,6 +37,8 @@ namespace museum {
 namespace {
 
 constexpr const char* HALL_TARGET = "hall";
+// MarchSettings::hit_mask (the bench's per-surface errors): the frame holds these ids instead.
+constexpr float HIT_ID_SKY = 0.0f, HIT_ID_HALL = 2.0f;  // exhibit 1 is sdf_morph's HIT_ID_OBJECT
 
 std::vector<ParamSpec> params() {
   std::vector<ParamSpec> p = {
@@ -52,26 +54,27 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
-RayPass sky_pass() {
+RayPass sky_pass(bool ids) {
   RayPass p;
   p.name = "sky";
   p.colour = HALL_TARGET;
   p.sdf_evals = "";
   p.shader = "museum/museum.glsl";
-  p.scalar = [](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
-    colour = sky(ray.dir);
+  p.uniforms = {{"u_hit_mask", 1, {ids ? 1.0f : 0.0f}}};
+  p.scalar = [ids](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
+    colour = ids ? glm::vec3(HIT_ID_SKY) : sky(ray.dir);
     keep = true;
   };
-  p.packet = [](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+  p.packet = [ids](const RayPacket& rays, RayPassOutput& out, RayStats&) {
     for (int i = 0; i < rays.count; ++i) {
-      out.colour[i] = sky(rays.dir.lane(i));
+      out.colour[i] = ids ? glm::vec3(HIT_ID_SKY) : sky(rays.dir.lane(i));
       out.keep[i] = true;
     }
   };
   return p;
 }
 
-MeshPass hall_pass(const HallLight& light) {
+MeshPass hall_pass(const HallLight& light, bool ids) {
   MeshPass p;
   p.name = "hall";
   p.mesh = unit_cube();
@@ -81,7 +84,9 @@ MeshPass hall_pass(const HallLight& light) {
   p.colour = HALL_TARGET;
   p.fragment = "museum/hall.frag";
   p.uniforms = light_uniforms(light);
-  p.shade = [light](const MeshFragment& f) {
+  p.uniforms.push_back({"u_hit_mask", 1, {ids ? 1.0f : 0.0f}});
+  p.shade = [light, ids](const MeshFragment& f) {
+    if (ids) return glm::vec4(glm::vec3(HIT_ID_HALL), 1.0f);
     return glm::vec4(hall_radiance(f.world_position, f.world_normal, glm::vec3(f.instance_data),
                                    f.instance_data.w, light),
                      1.0f);
@@ -106,10 +111,15 @@ class MuseumScene : public Scene {
     const CameraModel cam =
         make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
     HallLight light{ctx.camera.origin, sun_occluders()};
-    plan.passes.push_back(sky_pass());
-    plan.passes.push_back(hall_pass(light));
+    const bool ids = ctx.march.hit_mask;
+    plan.passes.push_back(sky_pass(ids));
+    plan.passes.push_back(hall_pass(light, ids));
     const ExhibitStage stage{ctx, cam, light, HALL_TARGET, DEPTH_TARGET, probe_.get()};
     add_exhibit_passes(plan, stage, nullptr);
+    if (ids) {
+      plan.passes.push_back(copy_pass(HALL_TARGET, COLOUR_TARGET));
+      return plan;
+    }
     Atmosphere air;
     air.fog_density = float(ctx.params.scalar("fog_density"));
     air.rays_strength = float(ctx.params.scalar("rays_strength"));

@@ -82,7 +82,7 @@ bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, glm::vec4& co
   const vec3 r = f.to_world * sdf_morph::reflectDir(dl, n);
   const float shadow = sun_visibility(world_hit + world_n * 0.002f, f.light);
   const vec3 c = sdf_morph::shadeObjectLit(n, dl, sample_probe(*f.probe, r), shadow, 1.0f, f.morph);
-  colour = glm::vec4(c, 1.0f);
+  colour = glm::vec4(f.morph.hit_mask ? vec3(sdf_morph::HIT_ID_OBJECT) : c, 1.0f);
   const float view_depth = glm::dot(world_hit - f.eye, f.forward);
   depth = f.depth_scale * (1.0f - f.near_plane / view_depth);
   return true;
