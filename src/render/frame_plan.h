@@ -94,6 +94,10 @@ struct MeshPass {
   std::string vertex = "common/mesh.vert", fragment;
   std::vector<ShaderUniform> uniforms;
   std::function<glm::vec4(const MeshFragment&)> shade;
+  // Instead of `shade`, for surfaces found inside the mesh (ray marching in a bounding mesh): the
+  // fragment's colour and its own window depth, or false to discard. The depth test and write use
+  // that depth (a late test, as GL does when the fragment shader writes gl_FragDepth).
+  std::function<bool(const MeshFragment&, glm::vec4& colour, float& depth)> shade_depth;
 };
 
 // The images an image pass reads, in the order of ImagePass::inputs.

@@ -9,7 +9,8 @@
   SCENE(lantern_festival)     \
   SCENE(water_lily)           \
   SCENE(light_beams)          \
-  SCENE(lenticular_card)
+  SCENE(lenticular_card)      \
+  SCENE(museum)
 
 namespace sdfreel {
 

@@ -146,10 +146,11 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       }
       if (!inside) continue;
       const double l0 = b[0] / area, l1 = b[1] / area, l2 = b[2] / area;
-      const float z = float(l0 * s.depth[0] + l1 * s.depth[1] + l2 * s.depth[2]);
+      float z = float(l0 * s.depth[0] + l1 * s.depth[1] + l2 * s.depth[2]);
       if (z < 0.0f || z > 1.0f) continue;  // outside the near/far range, as GL clips
       const int x = wx, y = height - 1 - wy;
-      if (out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
+      const bool late = bool(pass.shade_depth);
+      if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
       // Perspective-correct varyings.
       const double q0 = l0 * s.inv_w[0], q1 = l1 * s.inv_w[1], q2 = l2 * s.inv_w[2];
       const double qs = q0 + q1 + q2;
@@ -160,7 +161,13 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       frag.uv = s.v[0].uv * w0 + s.v[1].uv * w1 + s.v[2].uv * w2;
       frag.instance_data = s.data;
       frag.front_facing = s.front;
-      const glm::vec4 c = pass.shade(frag);
+      glm::vec4 c;
+      if (late) {
+        if (!pass.shade_depth(frag, c, z)) continue;
+        if (out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
+      } else {
+        c = pass.shade(frag);
+      }
       if (c.a < pass.alpha_cutoff) continue;
       if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
       float* px = out.colour->at(x, y);
@@ -175,7 +182,8 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
 
 void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
   if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
-  if (!pass.shade) throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
+  if (!pass.shade && !pass.shade_depth)
+    throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
   MeshTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
   if (!pass.depth.empty()) {
     out.depth = &targets.get(pass.depth, pass.name);
