@@ -6,7 +6,9 @@
 //      sun with analytic window and occluder shadows, ambient and Blinn-Phong specular;
 //   3. exhibits on their plinths (museum/exhibits.h): exhibit 1, the sdf_morph object ray-marched
 //      inside its bounding mesh, composited by depth, reflecting a probe of the hall taken from its
-//      centre in prepare() (museum/probe.h); plinths 2 and 3 ready for issue 13;
+//      centre in prepare() (museum/probe.h); exhibit 2, the lenticular card, on the second plinth
+//      (museum/card_exhibit.h: the card's own ray pass, depth tested and written); plinth 3 ready
+//      for the fur;
 //   4. exhibit 4, the air: occlusion from depth -> crepuscular rays -> composite with fog
 //      (museum/atmosphere.h).
 //
@@ -19,12 +21,15 @@
 //   exhibit_shift_z  exhibit 1 moved along z (across the hall), metres
 //   exhibit_yaw      exhibit 1 turned about the vertical, radians
 //   exhibit_scale    exhibit 1's size (1 = sdf_morph's object, about 1 m tall)
+#include <cstring>
 #include <memory>
 #include <vector>
 
+#include "io/cache_file.h"
 #include "render/camera_model.h"
 #include "scenes/common/param.h"
 #include "scenes/museum/atmosphere.h"
+#include "scenes/museum/card_exhibit.h"
 #include "scenes/museum/exhibits.h"
 #include "scenes/museum/meshes.h"
 #include "scenes/scene.h"
@@ -100,8 +105,20 @@ class MuseumScene : public Scene {
     const glm::vec3 centre = exhibit_one_centre(ctx);
     probe_ = std::make_shared<const ReflectionProbe>(
         render_probe(centre, hall_boxes(), HallLight{centre, sun_occluders()}));
+    prints_ = &lenticular_card::default_card_prints();
   }
-  std::vector<ShaderTexture> shader_textures() const override { return {probe_texture(*probe_)}; }
+  std::vector<ShaderTexture> shader_textures() const override {
+    std::vector<ShaderTexture> t = lenticular_card::card_shader_textures(*prints_);
+    t.push_back(probe_texture(*probe_));
+    return t;
+  }
+  // The probe is a pure function of its centre (the hall is fixed), the prints have their key.
+  uint64_t shader_textures_key() const override {
+    const glm::vec3 c = probe_->centre;
+    const uint64_t words[4] = {prints_->key, uint64_t(bits(c.x)), uint64_t(bits(c.y)),
+                               uint64_t(bits(c.z))};
+    return checksum64(words, sizeof words) | 1ull;  // never 0 ("unknown")
+  }
   glm::vec3 radiance(const Ray& ray, RayStats&) const override { return sky(ray.dir); }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan;
@@ -115,7 +132,9 @@ class MuseumScene : public Scene {
     plan.passes.push_back(sky_pass(ids));
     plan.passes.push_back(hall_pass(light, ids));
     const ExhibitStage stage{ctx, cam, light, HALL_TARGET, DEPTH_TARGET, probe_.get()};
-    add_exhibit_passes(plan, stage, nullptr);
+    ExhibitPasses extra[PLINTH_COUNT];
+    extra[CARD_PLINTH] = card_exhibit(*prints_);
+    add_exhibit_passes(plan, stage, extra);
     if (ids) {
       plan.passes.push_back(copy_pass(HALL_TARGET, COLOUR_TARGET));
       return plan;
@@ -128,7 +147,13 @@ class MuseumScene : public Scene {
   }
 
  private:
+  static uint32_t bits(float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+  }
   std::shared_ptr<const ReflectionProbe> probe_;
+  const lenticular_card::CardPrints* prints_ = nullptr;
 };
 
 // Hard places: inside exhibit 1's bound, and the floor at a grazing angle.
@@ -147,9 +172,10 @@ SceneInfo museum_scene_info() {
       "A small gallery hall (seed 004) drawn as meshes with a depth buffer: floor, walls, "
       "ceiling, a tall window the low sun shines through, a door, a bench, four plinths, "
       "pictures and labels. Exhibit 1 is the sdf_morph object, ray-marched inside its bounding "
-      "box and composited with the hall by depth; exhibit 4 is the light itself: crepuscular "
-      "rays (GPU Gems 3, ch. 13) from the window's sky and a distance fog. Plinths 2 and 3 wait "
-      "for the lenticular card and the fur.";
+      "box and composited with the hall by depth; exhibit 2 is the lenticular card (the scene "
+      "lenticular_card's ray pass, depth tested against the hall); exhibit 4 is the light "
+      "itself: crepuscular rays (GPU Gems 3, ch. 13) from the window's sky and a distance fog. "
+      "Plinth 3 waits for the fur.";
   info.params = museum::params();
   info.default_camera = CameraPose{{3.5, 1.5, -2.2}, {-4.0, 1.9, 0.0}, 55.0, 0.0};
   info.test_poses = museum::test_poses();
