@@ -8,10 +8,8 @@
 #include <set>
 #include <string>
 
-#include "backends/cpu/cpu_image_pass.h"
-#include "backends/cpu/cpu_mesh_pass.h"
-#include "backends/cpu/cpu_ray_pass.h"
 #include "scenes/museum/exhibits.h"
+#include "scenes/museum/museum_passes.h"
 #include "scenes/registry.h"
 #include "scenes/scene_pixels.h"
 #include "scenes/sdf_morph/geometry.h"
@@ -33,34 +31,9 @@ FrameContext museum_context(const CameraPose& pose, double shift_x = 0.0, double
   return ctx;
 }
 
-// The targets after the museum plan's passes named in `names` (in plan order).
-struct Targets {
-  ImageRGBA colour, depth;
-};
+using Targets = test::MuseumTargets;
 Targets run_passes(const FrameContext& ctx, const std::set<std::string>& names) {
-  std::unique_ptr<Scene> scene = find_scene("museum")->make();
-  scene->prepare(ctx);
-  const FramePlan plan = scene->frame_plan(ctx);
-  CpuPassContext pc{ctx,
-                    glm::vec2(0.5f),
-                    make_camera_model(ctx.camera, W, H, plan.near_plane, plan.far_plane),
-                    footprint_angle(ctx.camera.tan_half_fov, H),
-                    1,
-                    16,
-                    true};
-  CpuTargets targets(plan_targets(plan), W, H);
-  targets.clear();
-  RayStats stats;
-  for (const Pass& pass : plan.passes) {
-    if (!names.count(pass_name(pass))) continue;
-    if (const auto* ray = std::get_if<RayPass>(&pass))
-      run_ray_pass(*ray, pc, targets, stats);
-    else if (const auto* mesh = std::get_if<MeshPass>(&pass))
-      run_mesh_pass(*mesh, pc, targets);
-    else
-      run_image_pass(std::get<ImagePass>(pass), pc, targets);
-  }
-  return {targets.get(HALL, "test"), targets.get(DEPTH_TARGET, "test")};
+  return test::run_museum_passes(ctx, names);
 }
 
 bool same_rgb(const float* a, const float* b) {

@@ -1,0 +1,47 @@
+#pragma once
+// Runs the museum plan's own passes on the CPU, one sample at the pixel centres, into targets a
+// test can read: the hall's colour and the depth after the passes named (in plan order).
+#include <memory>
+#include <set>
+#include <string>
+
+#include "backends/cpu/cpu_image_pass.h"
+#include "backends/cpu/cpu_mesh_pass.h"
+#include "backends/cpu/cpu_ray_pass.h"
+#include "scenes/registry.h"
+
+namespace sdfreel::test {
+
+struct MuseumTargets {
+  ImageRGBA colour, depth;
+};
+
+inline MuseumTargets run_museum_passes(const FrameContext& ctx,
+                                       const std::set<std::string>& names) {
+  std::unique_ptr<Scene> scene = find_scene("museum")->make();
+  scene->prepare(ctx);
+  const FramePlan plan = scene->frame_plan(ctx);
+  CpuPassContext pc{
+      ctx,
+      glm::vec2(0.5f),
+      make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane),
+      footprint_angle(ctx.camera.tan_half_fov, ctx.height),
+      1,
+      16,
+      true};
+  CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
+  targets.clear();
+  RayStats stats;
+  for (const Pass& pass : plan.passes) {
+    if (!names.count(pass_name(pass))) continue;
+    if (const auto* ray = std::get_if<RayPass>(&pass))
+      run_ray_pass(*ray, pc, targets, stats);
+    else if (const auto* mesh = std::get_if<MeshPass>(&pass))
+      run_mesh_pass(*mesh, pc, targets);
+    else
+      run_image_pass(std::get<ImagePass>(pass), pc, targets);
+  }
+  return {targets.get("hall", "test"), targets.get(DEPTH_TARGET, "test")};
+}
+
+}  // namespace sdfreel::test
