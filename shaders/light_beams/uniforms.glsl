@@ -6,6 +6,8 @@ const int LIGHT_COUNT = 4;
 const int BEAM_COUNT = 4;
 const int OCCLUDER = LIGHT_COUNT + BEAM_COUNT;
 const int SHAPE_COUNT = OCCLUDER + 1;
+const int MAX_PAIR_CROSSINGS = 8;
+const int MAX_CROSSINGS = 64;
 
 const int ESTIMATOR_SEED_RAY = 0;
 const int ESTIMATOR_PENUMBRA = 1;
@@ -23,6 +25,8 @@ struct BeamsUniforms {
   float min_hit_dist;
   float max_trace_dist;
   int hit_mask;
+  vec2 crossings[MAX_CROSSINGS];
+  int crossing_first[SHAPE_COUNT * SHAPE_COUNT + 1];
 };
 
 uniform BeamsUniforms u_beams;

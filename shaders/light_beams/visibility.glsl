@@ -23,16 +23,52 @@ vec2 turn(vec2 n, float a) {
   return vec2(n.x * c - n.y * s, n.x * s + n.y * c);
 }
 
-vec2 hiddenSpan(vec2 p, LightView lv, Shape light, Shape other) {
+int pairIndex(int i, int j) { return i < j ? i * SHAPE_COUNT + j : j * SHAPE_COUNT + i; }
+
+// The hidden parts of exactVisibility, kept sorted by start (globals: no array copies).
+vec2 g_hidden[SHAPE_COUNT - 1 + MAX_CROSSINGS];
+int g_hidden_count;
+float g_cuts[MAX_PAIR_CROSSINGS];
+
+void insertSorted(vec2 h) {
+  int k = g_hidden_count++;
+  for (; k > 0 && g_hidden[k - 1].x > h.x; --k) g_hidden[k] = g_hidden[k - 1];
+  g_hidden[k] = h;
+}
+
+bool inFront(vec2 p, vec2 n, float a, Shape light, Shape other) {
+  precise vec2 dir = turn(n, a);
+  precise float t_other = hitShape(p, dir, other);
+  precise float t_light = hitShape(p, dir, light);
+  return !(t_other == NO_HIT || (t_light != NO_HIT && t_light < t_other));
+}
+
+float hiddenParts(vec2 p, LightView lv, int light, int j, bool keep) {
+  Shape l = u_beams.shapes[light];
+  Shape other = u_beams.shapes[j];
   precise vec2 o = angularSpan(p, lv.n, other);
   precise float lo = dm_max(lv.span.x, o.x);
   precise float hi = dm_min(lv.span.y, o.y);
-  if (!(lo < hi)) return vec2(0.0, 0.0);
-  precise vec2 dir = turn(lv.n, 0.5 * (lo + hi));
-  precise float t_other = hitShape(p, dir, other);
-  precise float t_light = hitShape(p, dir, light);
-  if (t_other == NO_HIT || (t_light != NO_HIT && t_light < t_other)) return vec2(0.0, 0.0);
-  return vec2(lo, hi);
+  if (!(lo < hi)) return 0.0;
+  int n = 0;
+  int pair = pairIndex(light, j);
+  for (int k = u_beams.crossing_first[pair]; k < u_beams.crossing_first[pair + 1]; ++k) {
+    precise float a = dm_clamp(angleFrom(lv.n, u_beams.crossings[k] - p), lo, hi);
+    int m = n++;
+    for (; m > 0 && g_cuts[m - 1] > a; --m) g_cuts[m] = g_cuts[m - 1];
+    g_cuts[m] = a;
+  }
+  precise float hidden_width = 0.0;
+  precise float start = lo;
+  for (int k = 0; k <= n; ++k) {
+    precise float end = k < n ? g_cuts[k] : hi;
+    if (start < end && inFront(p, lv.n, 0.5 * (start + end), l, other)) {
+      hidden_width += end - start;
+      if (keep) insertSorted(vec2(start, end));
+    }
+    start = end;
+  }
+  return hidden_width;
 }
 
 float nearestDist(vec2 p, int skip, inout RayStats stats) {
@@ -70,8 +106,7 @@ float penumbraVisibility(vec2 p, int light, inout RayStats stats) {
     if (j == light) continue;
     stats.sdf_evals += 1u;
     if (shapeSDF(p, u_beams.shapes[j]) <= 0.0) return 0.0;
-    precise vec2 h = hiddenSpan(p, lv, l, u_beams.shapes[j]);
-    if (h.x < h.y) vis *= 1.0 - (h.y - h.x) / width;
+    vis *= 1.0 - hiddenParts(p, lv, light, j, false) / width;
   }
   return dm_max(vis, 0.0);
 }
@@ -81,29 +116,20 @@ float exactVisibility(vec2 p, int light, inout RayStats stats) {
   LightView lv = viewOf(p, l);
   precise float width = lv.span.y - lv.span.x;
   if (!(width > 0.0)) return 1.0;
-  precise vec2 hidden[SHAPE_COUNT];
-  int count = 0;
+  g_hidden_count = 0;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
     if (j == light) continue;
     stats.sdf_evals += 1u;
     if (shapeSDF(p, u_beams.shapes[j]) <= 0.0) return 0.0;
-    precise vec2 h = hiddenSpan(p, lv, l, u_beams.shapes[j]);
-    if (!(h.x < h.y)) continue;
-    int k = count;
-    while (k > 0 && hidden[k - 1].x > h.x) {
-      hidden[k] = hidden[k - 1];
-      --k;
-    }
-    hidden[k] = h;
-    ++count;
+    hiddenParts(p, lv, light, j, true);
   }
   precise float covered = 0.0;
   precise float reach = lv.span.x;
-  for (int k = 0; k < count; ++k) {
-    precise float lo = dm_max(hidden[k].x, reach);
-    if (hidden[k].y > lo) {
-      covered += hidden[k].y - lo;
-      reach = hidden[k].y;
+  for (int k = 0; k < g_hidden_count; ++k) {
+    precise float lo = dm_max(g_hidden[k].x, reach);
+    if (g_hidden[k].y > lo) {
+      covered += g_hidden[k].y - lo;
+      reach = g_hidden[k].y;
     }
   }
   return dm_clamp(1.0 - covered / width, 0.0, 1.0);

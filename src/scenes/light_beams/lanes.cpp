@@ -1,5 +1,6 @@
 #include "scenes/light_beams/lanes.h"
 
+#include "scenes/light_beams/crossings.h"
 #include "scenes/light_beams/render.h"
 #include "scenes/light_beams/visibility.h"
 
@@ -185,23 +186,51 @@ P8 turn8(P8 n, F8 a) {
   return P8{n.x * c - n.y * s, n.x * s + n.y * c};
 }
 
-// hiddenSpan: (lo, hi) where `hidden`, as the scalar code returns them. Lanes outside `alive`
-// are don't-cares: when no alive lane's spans overlap, the depth test is skipped (as the scalar
-// code skips it for each point whose spans do not overlap).
-P8 hiddenSpan8(P8 p, const LightView8& lv, const Shape& light, const Shape& other, M8 alive,
-               M8& hidden) {
-  const P8 o = angularSpan8(p, lv.n, other);
-  const F8 lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
-  if (!any(alive & (lo < hi))) {
-    hidden = splat_mask(false);
-    return P8{lo, hi};
-  }
-  const P8 dir = turn8(lv.n, 0.5f * (lo + hi));
+// inFront for each lane.
+M8 inFront8(P8 p, P8 n, F8 a, const Shape& light, const Shape& other) {
+  const P8 dir = turn8(n, a);
   const F8 t_other = hitShape8(p, dir, other);
   const F8 t_light = hitShape8(p, dir, light);
-  const M8 behind = (t_other == NO_HIT) | ((t_light != NO_HIT) & (t_light < t_other));
-  hidden = (lo < hi) & ~behind;
-  return P8{lo, hi};
+  return ~((t_other == NO_HIT) | ((t_light != NO_HIT) & (t_light < t_other)));
+}
+
+// hiddenParts for the lanes in `alive`: returns the hidden width and appends one slot per part
+// to slots[n...] ((start, end) where hidden, start EMPTY_SLOT where not). A part that no alive
+// lane needs (empty, or spans that do not overlap) is not tested, as the scalar code skips it;
+// a part hidden in no lane adds no slot (EMPTY_SLOT slots change nothing in the union).
+F8 hiddenParts8(P8 p, const LightView8& lv, int light, int j, M8 alive, const BeamsUniforms& u,
+                P8* slots, int& n) {
+  const Shape &l = u.shapes[light], &other = u.shapes[j];
+  const P8 o = angularSpan8(p, lv.n, other);
+  const F8 lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
+  F8 hidden_width = splat(0.0f);
+  alive &= lo < hi;
+  if (!any(alive)) return hidden_width;
+  F8 cuts[MAX_PAIR_CROSSINGS];
+  int cut_count = 0;
+  const int pair = pairIndex(light, j);
+  for (int k = u.crossing_first[pair]; k < u.crossing_first[pair + 1]; ++k)
+    cuts[cut_count++] = dm::min(dm::max(angleFrom8(lv.n, sub(u.crossings[k], p)), lo), hi);
+  // Sorted (odd-even transposition: the same values in the same order as an insertion sort).
+  for (int round = 0; round < cut_count; ++round) {
+    for (int k = round % 2; k + 1 < cut_count; k += 2) {
+      const F8 a = cuts[k], b = cuts[k + 1];
+      cuts[k] = dm::min(a, b);
+      cuts[k + 1] = dm::max(a, b);
+    }
+  }
+  F8 start = lo;
+  for (int k = 0; k <= cut_count; ++k) {
+    const F8 end = k < cut_count ? cuts[k] : hi;
+    const M8 part = alive & (start < end);
+    if (any(part)) {
+      const M8 hidden = part & inFront8(p, lv.n, 0.5f * (start + end), l, other);
+      hidden_width = select(hidden, hidden_width + (end - start), hidden_width);
+      if (slots && any(hidden)) slots[n++] = P8{select(hidden, start, splat(EMPTY_SLOT)), end};
+    }
+    start = end;
+  }
+  return hidden_width;
 }
 
 // A cone of directions around the light's span, to skip shapes that surely miss it. Only a
@@ -257,7 +286,7 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u, R
   M8 alive = active & wide;
   M8 dark = splat_mask(false);  // inside another shape: 0
   F8 vis = splat(1.0f);
-  P8 slots[SHAPE_COUNT - 1];  // exact: the hidden intervals, in the order of the shapes
+  P8 slots[SHAPE_COUNT - 1 + MAX_CROSSINGS];  // exact: the hidden parts, in the shapes' order
   int n = 0;
   const LightCone8 cone = coneOf8(lv);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
@@ -267,18 +296,12 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u, R
     const M8 in = alive & (shapeSDF8(p, u.shapes[j]) <= 0.0f);
     dark |= in;
     alive &= ~in;
-    M8 hidden = splat_mask(false);
-    P8 h{splat(0.0f), splat(0.0f)};
     vec2 bc;
     float br;
     boundOf(u.shapes[j], bc, br);
-    if (any(alive & ~missesCone8(p, cone, bc, br)))
-      h = hiddenSpan8(p, lv, l, u.shapes[j], alive, hidden);
-    if (exact) {
-      slots[n++] = P8{select(hidden, h.x, splat(EMPTY_SLOT)), h.y};
-    } else {
-      vis = select(alive & hidden, vis * (1.0f - (h.y - h.x) / width), vis);
-    }
+    if (!any(alive & ~missesCone8(p, cone, bc, br))) continue;
+    const F8 hidden = hiddenParts8(p, lv, light, j, alive, u, exact ? slots : nullptr, n);
+    if (!exact) vis = select(alive, vis * (1.0f - hidden / width), vis);
   }
   if (exact) {
     // Stable sort by start (odd-even transposition, swapping only on >): the scalar insertion
