@@ -134,5 +134,14 @@ TEST(LightBeamsScene, BeamsSwayWithTime) {
   }
 }
 
+// The packet-path (TIME 0, 3.7) and agreement (TIME 3) tests render the default scene: beams cross
+// lights there, so both check the cut shared angles (crossings.h) too.
+TEST(LightBeamsScene, BeamsCrossLightsInTheTestedFrames) {
+  for (double time : {0.0, 3.0, 3.7}) {
+    const BeamsUniforms u = make_beams_uniforms(context(time));
+    EXPECT_GT(u.crossing_first[SHAPE_COUNT * SHAPE_COUNT], 0) << "TIME " << time;
+  }
+}
+
 }  // namespace
 }  // namespace sdfreel::light_beams
