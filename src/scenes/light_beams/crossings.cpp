@@ -105,6 +105,59 @@ double scaleOf(const Shape& s, const Shape& t) {
   return 1.0 + double(m);
 }
 
+// The closest points of two shapes' cores (a point, or the segment a-b): two segments that do
+// not intersect are closest at an end of one of them.
+dvec2 closestOnCore(dvec2 p, const Shape& s) {
+  const dvec2 a(s.a), b = s.type == SHAPE_CIRCLE ? dvec2(s.a) : dvec2(s.b);
+  const dvec2 ba = b - a;
+  const double bb = ba.x * ba.x + ba.y * ba.y;
+  const double h =
+      bb > 0.0 ? std::clamp(((p - a).x * ba.x + (p - a).y * ba.y) / bb, 0.0, 1.0) : 0.0;
+  return a + ba * h;
+}
+
+bool coresIntersect(const Shape& s, const Shape& t) {
+  if (s.type == SHAPE_CIRCLE || t.type == SHAPE_CIRCLE) return false;
+  std::vector<dvec2> out;
+  crossSides({dvec2(s.a), dvec2(s.b)}, {dvec2(t.a), dvec2(t.b)}, out);
+  return !out.empty();
+}
+
+void closestCorePoints(const Shape& s, const Shape& t, dvec2& on_s, dvec2& on_t) {
+  double best = 1e300;
+  const auto consider = [&](dvec2 x, dvec2 y) {
+    if (len(y - x) < best) best = len(y - x), on_s = x, on_t = y;
+  };
+  for (const dvec2 e : {dvec2(s.a), s.type == SHAPE_CIRCLE ? dvec2(s.a) : dvec2(s.b)})
+    consider(e, closestOnCore(e, t));
+  for (const dvec2 e : {dvec2(t.a), t.type == SHAPE_CIRCLE ? dvec2(t.a) : dvec2(t.b)})
+    consider(closestOnCore(e, s), e);
+}
+
+// Whether shape s lies inside t: both end discs of s inside t (t is convex).
+bool inside(const Shape& s, const Shape& t) {
+  const dvec2 b = s.type == SHAPE_CIRCLE ? dvec2(s.a) : dvec2(s.b);
+  return sdf(dvec2(s.a), t) <= -double(s.r) && sdf(b, t) <= -double(s.r);
+}
+
+// How s and t (s first) lie; for PAIR_APART, line gets the separating line.
+int pairMode(const Shape& s, const Shape& t, glm::vec4& line) {
+  if (!coresIntersect(s, t)) {
+    dvec2 cs, ct;
+    closestCorePoints(s, t, cs, ct);
+    const double gap = len(ct - cs) - double(s.r) - double(t.r);
+    if (gap > 0.0) {
+      const dvec2 n = (ct - cs) / len(ct - cs);
+      const dvec2 mid = cs + n * (double(s.r) + 0.5 * gap);
+      line = glm::vec4(float(mid.x), float(mid.y), float(n.x), float(n.y));
+      return PAIR_APART;
+    }
+  }
+  if (inside(s, t)) return PAIR_FIRST_INSIDE;
+  if (inside(t, s)) return PAIR_SECOND_INSIDE;
+  return PAIR_CROSSING;
+}
+
 }  // namespace
 
 void findCrossings(BeamsUniforms& u) {
@@ -115,6 +168,8 @@ void findCrossings(BeamsUniforms& u) {
       u.crossing_first[pair] = count;
       if (!(i < j)) continue;
       const Shape &s = u.shapes[i], &t = u.shapes[j];
+      u.pair_mode[pair] = pairMode(s, t, u.pair_line[pair]);
+      if (u.pair_mode[pair] != PAIR_CROSSING) continue;
       // A piece's crossing off the outline (inside a capsule) misses it by far more than this;
       // a real one by rounding only. Keeping a near miss merely splits the angles once more.
       const double tol = 1e-9 * scaleOf(s, t);

@@ -130,6 +130,12 @@ std::vector<ShaderUniform> beams_shader_uniforms(const BeamsUniforms& u) {
   for (const int k : u.crossing_first) first.values.push_back(float(k));
   out.push_back(crossings);
   out.push_back(first);
+  ShaderUniform mode{"u_beams.pair_mode", 1, {}}, line{"u_beams.pair_line", 4, {}};
+  for (const int m : u.pair_mode) mode.values.push_back(float(m));
+  for (const glm::vec4& l : u.pair_line)
+    line.values.insert(line.values.end(), {l.x, l.y, l.z, l.w});
+  out.push_back(mode);
+  out.push_back(line);
   return out;
 }
 

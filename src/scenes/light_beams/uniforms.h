@@ -20,6 +20,11 @@ constexpr int SHAPE_COUNT = OCCLUDER + 1;
 // Crossings of two shapes' outlines (crossings.h): two stadiums cross in at most 8 points.
 constexpr int MAX_PAIR_CROSSINGS = 8;
 constexpr int MAX_CROSSINGS = 64;
+// How two shapes i < j lie (crossings.h), which says which one a ray meets first.
+constexpr int PAIR_CROSSING = 0;       // outlines cross (or undecided): cut and test rays
+constexpr int PAIR_APART = 1;          // disjoint: the side of a separating line decides
+constexpr int PAIR_FIRST_INSIDE = 2;   // i inside j: j always first
+constexpr int PAIR_SECOND_INSIDE = 3;  // j inside i: i always first
 
 // How a pixel finds how much of a light it sees (README "Speed against error").
 enum Estimator {
@@ -51,6 +56,10 @@ struct BeamsUniforms {
   // j)], crossing_first[pairIndex(i, j) + 1]) (crossings.h).
   vec2 crossings[MAX_CROSSINGS] = {};
   int crossing_first[SHAPE_COUNT * SHAPE_COUNT + 1] = {};
+  // For each pair i < j, at pairIndex(i, j): PAIR_*, and for PAIR_APART a line (x, y: a point,
+  // z, w: the unit normal toward j) that separates them.
+  int pair_mode[SHAPE_COUNT * SHAPE_COUNT] = {};
+  glm::vec4 pair_line[SHAPE_COUNT * SHAPE_COUNT] = {};
 };
 
 // Reads TIME, the parameters and the preset from ctx (ctx.params: this scene's parameters).

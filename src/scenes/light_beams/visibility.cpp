@@ -43,20 +43,40 @@ bool inFront(vec2 p, vec2 n, float a, const Shape& light, const Shape& other) {
   return !(t_other == NO_HIT || (t_light != NO_HIT && t_light < t_other));
 }
 
+// Whether j can come before the light from p, as far as the pair's mode says (crossings.h): j on
+// p's side of their separating line, or the light inside j; or the outlines cross.
+bool mayBeInFront(vec2 p, int light, int j, const BeamsUniforms& u) {
+  const int pair = pairIndex(light, j);
+  const int mode = u.pair_mode[pair];
+  if (mode == PAIR_APART) {
+    const glm::vec4 line = u.pair_line[pair];
+    const float side = (p.x - line.x) * line.z + (p.y - line.y) * line.w;
+    return j > light ? side > 0.0f : side < 0.0f;
+  }
+  if (mode == PAIR_CROSSING) return true;
+  return mode == (light < j ? PAIR_FIRST_INSIDE : PAIR_SECOND_INSIDE);
+}
+
 // The parts of the light's span that shape j hides from p, appended to hidden[count...] (when
-// hidden is not null); returns their total width. The angles both shapes cover are cut at the
-// directions where their outlines cross (crossings.h), clamped to those angles and sorted; in
-// each part between two cuts one shape is in front all along, and one ray through its middle
-// says which.
+// hidden is not null); returns their total width. Where j and the light do not cross, j is in
+// front along all the angles they share or along none (mayBeInFront). Where they cross, the
+// shared angles are cut at the directions of the crossings (crossings.h), clamped to those
+// angles and sorted; in each part one shape is in front all along, and one ray through its
+// middle says which.
 float hiddenParts(vec2 p, const LightView& lv, int light, int j, const BeamsUniforms& u,
                   vec2* hidden, int& count) {
+  if (!mayBeInFront(p, light, j, u)) return 0.0f;
   const Shape &l = u.shapes[light], &other = u.shapes[j];
   const vec2 o = angularSpan(p, lv.n, other);
   const float lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
   if (!(lo < hi)) return 0.0f;
+  const int pair = pairIndex(light, j);
+  if (u.pair_mode[pair] != PAIR_CROSSING) {
+    if (hidden) insertSorted(hidden, count, vec2(lo, hi));
+    return hi - lo;
+  }
   float cuts[MAX_PAIR_CROSSINGS];
   int n = 0;
-  const int pair = pairIndex(light, j);
   for (int k = u.crossing_first[pair]; k < u.crossing_first[pair + 1]; ++k) {
     const float a = dm::clamp(angleFrom(lv.n, u.crossings[k] - p), lo, hi);
     int m = n++;
