@@ -8,12 +8,12 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
 #include "io/fault_injection.h"
+#include "io/temp_name.h"
 
 namespace fs = std::filesystem;
 
@@ -40,8 +40,9 @@ void fsync_path(const std::string& path, int flags) {
 
 std::string temp_path_for(const std::string& path) {
   const fs::path p(path);
-  const std::string name = "." + p.filename().string() + ".tmp-" + std::to_string(::getpid()) +
-                           "-" + std::to_string(g_temp_counter.fetch_add(1));
+  const std::string name = "." + p.filename().string() + ".tmp-" + temp_host_name() + "-" +
+                           std::to_string(::getpid()) + "-" +
+                           std::to_string(g_temp_counter.fetch_add(1));
   return (p.parent_path() / name).string();
 }
 
@@ -110,13 +111,12 @@ void discard_temp_file(const std::string& temp) noexcept {
 int remove_stale_temp_files(const std::string& dir) {
   int removed = 0;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = entry.path().filename().string();
-    const size_t at = name.rfind(".tmp-");
-    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
-    const long pid = std::atol(name.c_str() + at + 5);
-    if (pid > 0 && std::filesystem::exists("/proc/" + std::to_string(pid))) continue;
-    if (std::filesystem::remove(entry.path(), ec)) ++removed;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const TempName t = parse_temp_name(entry.path().filename().string());
+    // Another node's temporaries are its own business: its PIDs mean nothing here.
+    if (!t.valid || t.host != temp_host_name()) continue;
+    if (fs::exists("/proc/" + std::to_string(t.pid))) continue;
+    if (fs::remove(entry.path(), ec)) ++removed;
   }
   return removed;
 }
