@@ -77,7 +77,7 @@ EOF
   # slurmd 22.05 always loads a cgroup plugin, even when no other plugin uses it, and its default
   # ("autodetect") fails where /sys/fs/cgroup has nothing mounted (a chroot, some containers).
   # Naming cgroup/v1 skips the detection; loading it touches no cgroup file system, and with the
-  # plugins above nothing asks it to. ("disabled", the clean way, exists only from Slurm 23.)
+  # plugins above nothing asks it to. ("disabled", the clean way, exists only in later releases.)
   echo "CgroupPlugin=cgroup/v1" >"$dir/cgroup.conf"
 }
 
