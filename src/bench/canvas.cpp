@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "bench/bitmap_font.h"
+#include "io/image_write.h"
 
 namespace sdfreel::bench {
 
@@ -107,10 +107,8 @@ void Canvas::write_png(const std::string& path) const {
   std::vector<uint8_t> bytes(px_.size());
   for (size_t i = 0; i < px_.size(); ++i)
     bytes[i] = uint8_t(std::lround(std::clamp(px_[i], 0.0f, 1.0f) * 255.0f));
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out || !out->open(path, OIIO::ImageSpec(w_, h_, 3, OIIO::TypeDesc::UINT8)) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) || !out->close())
-    throw std::runtime_error("cannot write the plot " + path);
+  write_image_atomic(path, "png", OIIO::ImageSpec(w_, h_, 3, OIIO::TypeDesc::UINT8),
+                     OIIO::TypeDesc::UINT8, bytes.data());
 }
 
 }  // namespace sdfreel::bench

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/image_write.h"
 #include "timeline/sha256.h"
 
 namespace sdfreel::bench {
@@ -31,12 +32,7 @@ bool read_png(const std::string& path, int w, int h, int channels, OIIO::TypeDes
 
 void write_png(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type,
                const void* data) {
-  const std::string tmp = path + ".tmp.png";
-  auto out = OIIO::ImageOutput::create(tmp);
-  if (!out || !out->open(tmp, OIIO::ImageSpec(w, h, channels, type)) ||
-      !out->write_image(type, data) || !out->close())
-    throw std::runtime_error("cannot write " + tmp);
-  std::filesystem::rename(tmp, path);
+  write_image_atomic(path, "png", OIIO::ImageSpec(w, h, channels, type), type, data);
 }
 
 }  // namespace

@@ -26,14 +26,15 @@ std::atomic<unsigned long> g_temp_counter{0};
   throw std::runtime_error("cannot " + what + " " + path + ": " + std::strerror(err));
 }
 
-void fsync_path(const std::string& path, int flags) {
+// Errors name `shown`: the file being published, which is what the user knows.
+void fsync_path(const std::string& path, int flags, const std::string& shown) {
   const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) fail("open", path, errno);
+  if (fd < 0) fail("open", shown, errno);
   const int rc = inject_io_fault() ? -1 : ::fsync(fd);
   const int err = errno;
   ::close(fd);
   // Some file systems cannot fsync a directory (EINVAL): the rename is still atomic there.
-  if (rc != 0 && err != EINVAL) fail("flush to disk", path, err);
+  if (rc != 0 && err != EINVAL) fail("flush to disk", shown, err);
 }
 
 }  // namespace
@@ -90,7 +91,7 @@ void write_file_atomic(const std::string& path, const void* data, size_t size) {
 
 void commit_temp_file(const std::string& temp, const std::string& path) {
   try {
-    fsync_path(temp, O_RDONLY);
+    fsync_path(temp, O_RDONLY, path);
     if (inject_io_fault() || std::rename(temp.c_str(), path.c_str()) != 0)
       throw std::runtime_error("cannot rename " + temp + " to " + path + ": " +
                                std::strerror(errno));
@@ -100,7 +101,7 @@ void commit_temp_file(const std::string& temp, const std::string& path) {
   }
   // Make the rename itself durable.
   const fs::path dir = fs::path(path).parent_path();
-  fsync_path(dir.empty() ? "." : dir.string(), O_RDONLY | O_DIRECTORY);
+  fsync_path(dir.empty() ? "." : dir.string(), O_RDONLY | O_DIRECTORY, path + " (its folder)");
 }
 
 void discard_temp_file(const std::string& temp) noexcept {

@@ -7,11 +7,11 @@
 namespace sdfreel {
 namespace {
 
-long fault_at() {
-  static const long at = [] {
+std::atomic<long>& fault_at() {
+  static std::atomic<long> at{[] {
     const char* v = std::getenv("SDFREEL_FAULT_AT");
     return v ? std::atol(v) : 0L;
-  }();
+  }()};
   return at;
 }
 
@@ -20,10 +20,15 @@ std::atomic<long> g_operations{0};
 }  // namespace
 
 bool inject_io_fault() {
-  const long at = fault_at();
+  const long at = fault_at().load(std::memory_order_relaxed);
   if (at <= 0 || g_operations.fetch_add(1) + 1 != at) return false;
   errno = ENOSPC;
   return true;
+}
+
+void set_io_fault_at(long n) {
+  g_operations = 0;
+  fault_at() = n;
 }
 
 }  // namespace sdfreel

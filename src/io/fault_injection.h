@@ -7,4 +7,8 @@ namespace sdfreel {
 // True when this operation must fail; sets errno to ENOSPC then.
 bool inject_io_fault();
 
+// For tests inside one process: the N-th operation from now fails (0: none), as
+// SDFREEL_FAULT_AT=N does for a whole process.
+void set_io_fault_at(long n);
+
 }  // namespace sdfreel

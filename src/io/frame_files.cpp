@@ -1,13 +1,13 @@
 // EXR and PNG frame files through OpenImageIO, published atomically.
 #include "io/frame_files.h"
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <stdexcept>
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/image_write.h"
 
 namespace sdfreel {
 namespace {
@@ -22,27 +22,6 @@ void check_size(const std::string& path, int width, int height, size_t values, i
   if (width <= 0 || height <= 0 || values != size_t(width) * height * per_pixel)
     throw std::runtime_error("cannot write " + path +
                              ": image is empty or its size is inconsistent");
-}
-
-// Encodes pixels with the named OIIO format plugin into memory, then writes the bytes with every
-// write checked (write_file_atomic). OIIO's own file writers do not all report a short write on a
-// full disk; encoding to memory leaves the disk to code that does.
-void write_image_atomic(const std::string& path, const char* format, const OIIO::ImageSpec& spec,
-                        OIIO::TypeDesc data_type, const void* data) {
-  auto out = OIIO::ImageOutput::create(format);
-  if (!out)
-    throw std::runtime_error("cannot write " + path + ": OpenImageIO has no " + format +
-                             " writer: " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw std::runtime_error("cannot write " + path + ": this OpenImageIO's " + format +
-                             " writer cannot write to memory");
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  out->set_ioproxy(&memory);
-  if (!(out->open(path, spec) && out->write_image(data_type, data) && out->close()))
-    throw std::runtime_error("cannot write " + path + ": " + out->geterror());
-  out.reset();
-  write_file_atomic(path, bytes.data(), bytes.size());
 }
 
 std::unique_ptr<OIIO::ImageInput> open_input(const std::string& path) {
