@@ -1,0 +1,30 @@
+#include "bench/adaptive_configs.h"
+
+#include <cstdio>
+
+namespace sdfreel::bench {
+
+namespace {
+
+constexpr int MINIMUM = 2;
+const int MAXIMUM_VALUES[] = {16, 64};
+const float THRESHOLD_VALUES[] = {0.002f, 0.003f, 0.004f, 0.006f, 0.01f};
+
+}  // namespace
+
+std::vector<BenchConfig> adaptive_configs() {
+  std::vector<BenchConfig> out;
+  const BenchConfig base{"final", Quality::Final, march_settings(Quality::Final), 1, false};
+  for (int maximum : MAXIMUM_VALUES)
+    for (float threshold : THRESHOLD_VALUES) {
+      BenchConfig c = base;
+      c.adaptive = AdaptiveSampling{true, MINIMUM, maximum, threshold};
+      char name[64];
+      std::snprintf(name, sizeof name, "final:adaptive=%g/%d", double(threshold), maximum);
+      c.name = name;
+      out.push_back(c);
+    }
+  return out;
+}
+
+}  // namespace sdfreel::bench
