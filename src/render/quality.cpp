@@ -49,8 +49,8 @@ int naive_preset_samples() {
   return preset_samples(Quality::Final);
 }
 
-// Chosen with `sdfreel bench` (README "Adaptive sampling"): final reaches the PSNR of fixed 8
-// samples in the time of fixed 4 on the lantern festival at 1280x720.
+// First numbers, not tuned yet: README "Adaptive sampling" has what the bench measured (the
+// issue's targets are not met by this estimator yet).
 AdaptiveSampling adaptive_preset(Quality q) {
   switch (q) {
     case Quality::Draft:
