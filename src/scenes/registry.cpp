@@ -8,7 +8,8 @@
   SCENE(sdf_morph)            \
   SCENE(lantern_festival)     \
   SCENE(water_lily)           \
-  SCENE(light_beams)
+  SCENE(light_beams)          \
+  SCENE(fur)
 
 namespace sdfreel {
 

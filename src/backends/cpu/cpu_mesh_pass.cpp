@@ -74,14 +74,21 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
       ClipVertex v[3];
       for (int k = 0; k < 3; ++k) {
         const unsigned i = m.index(t * 3 + size_t(k));
-        const glm::vec4 world = inst.model * glm::vec4(m.positions[i * 3], m.positions[i * 3 + 1],
-                                                       m.positions[i * 3 + 2], 1.0f);
-        v[k].world = glm::vec3(world);
-        v[k].clip = view_proj * world;
-        v[k].normal = m.normals.empty()
-                          ? glm::vec3(0.0f)
-                          : normal_matrix * glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
-                                                      m.normals[i * 3 + 2]);
+        const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1],
+                                 m.positions[i * 3 + 2]);
+        const glm::vec3 normal =
+            m.normals.empty()
+                ? glm::vec3(0.0f)
+                : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1], m.normals[i * 3 + 2]);
+        if (pass.place) {
+          const PlacedVertex placed = pass.place(inst, position, normal);
+          v[k].world = placed.world;
+          v[k].normal = placed.normal;
+        } else {
+          v[k].world = glm::vec3(inst.model * glm::vec4(position, 1.0f));
+          v[k].normal = normal_matrix * normal;
+        }
+        v[k].clip = view_proj * glm::vec4(v[k].world, 1.0f);
         v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
       }
       ClipVertex clipped[6];
