@@ -133,4 +133,8 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const ExhibitPa
     plan.passes.push_back(shell_pass(model, pose[size_t(i)], p.looks[size_t(i)], p, look));
 }
 
+void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const ExhibitParams& p, double t) {
+  add_exhibit_passes(plan, model, p, exhibit_pose(p.physics, t));
+}
+
 }  // namespace sdfreel::fur

@@ -28,5 +28,7 @@ CaseLook exhibit_look(const glm::mat4& model, const ExhibitParams& p, const Exhi
 // the open side towards -z) to world space: a rotation, uniform scale and translation.
 void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const ExhibitParams& p,
                         const ExhibitPose& pose);
+// The same at scene TIME t (a museum's call: add_exhibit_passes(plan, plinth_top, {}, TIME)).
+void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const ExhibitParams& p, double t);
 
 }  // namespace sdfreel::fur
