@@ -6,8 +6,10 @@ uniform vec3 u_light_dir;
 uniform vec3 u_light;
 uniform vec3 u_ambient;
 uniform vec4 u_bodies[3];  // world centre, footprint radius
+uniform float u_hit_mask;  // 1: draw hit id 0 (MarchSettings::hit_mask)
 
 vec4 shade(MeshFragment f) {
+  if (u_hit_mask > 0.5) return vec4(0.0, 0.0, 0.0, 1.0);
   vec3 n = normalize(f.world_normal);
   float lambert = dm_max(dot(n, u_light_dir), 0.0);
   float shadow = 1.0;

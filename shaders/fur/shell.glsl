@@ -14,6 +14,7 @@ uniform vec3 u_fur_tip;
 uniform vec3 u_light_dir;
 uniform vec3 u_light;
 uniform vec3 u_ambient;
+uniform float u_hit_id;  // >= 0: draw this id instead (MarchSettings::hit_mask)
 
 vec4 shade(MeshFragment f) {
   float h = f.instance_data.x;
@@ -23,6 +24,7 @@ vec4 shade(MeshFragment f) {
   vec2 local = (uvd - cell) * 2.0 - 1.0;
   float rnd = dm_mix(STRAND_MIN, STRAND_MAX, strand_random(ivec2(cell)));
   if (h > 0.0 && length(local) > u_fur_thickness * (rnd - h)) return vec4(0.0);
+  if (u_hit_id >= 0.0) return vec4(vec3(u_hit_id), 1.0);
   vec3 n = normalize(f.world_normal);
   float lit = dm_clamp(dot(n, u_light_dir), 0.0, 1.0) * 0.5 + 0.5;
   lit = lit * lit;

@@ -41,6 +41,7 @@ MeshInstance box_instance(const glm::mat4& model, const glm::vec3& centre, const
 }
 
 glm::vec4 shade_case(const CaseLook& look, const MeshFragment& f) {
+  if (look.hit_mask) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   const glm::vec3 n = glm::normalize(f.world_normal);
   const float lambert = dm::max(glm::dot(n, look.light_dir), 0.0f);
   float shadow = 1.0f;

@@ -67,6 +67,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   look.base = glm::vec3(fur.base_color);
   look.tip = glm::vec3(fur.tip_color);
   look.light_dir = light.light_dir, look.light = light.light, look.ambient = light.ambient;
+  if (p.hit_mask) look.hit_id = float(int(body.shape) + 1);
   pass.vertex = "fur/shell.vert";
   pass.fragment = "fur/shell.glsl";
   pass.alpha_cutoff = 0.5f;
@@ -78,6 +79,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   pass.uniforms.push_back({"u_fur_twist", 16, twist_values});
   pass.uniforms.push_back(vec3_uniform("u_fur_offset", m.offset));
   pass.uniforms.push_back({"u_fur_density", 1, {look.density}});
+  pass.uniforms.push_back({"u_hit_id", 1, {look.hit_id}});
   pass.uniforms.push_back({"u_fur_thickness", 1, {look.thickness}});
   pass.uniforms.push_back(vec3_uniform("u_fur_base", look.base));
   pass.uniforms.push_back(vec3_uniform("u_fur_tip", look.tip));
@@ -101,6 +103,7 @@ MeshPass lit_boxes_pass(const std::string& name, std::vector<MeshInstance> boxes
   std::vector<float> bodies;
   for (const glm::vec4& b : look.bodies) bodies.insert(bodies.end(), {b.x, b.y, b.z, b.w});
   pass.uniforms.push_back({"u_bodies", 4, bodies});
+  pass.uniforms.push_back({"u_hit_mask", 1, {look.hit_mask ? 1.0f : 0.0f}});
   pass.shade = [look](const MeshFragment& f) { return shade_case(look, f); };
   return pass;
 }
@@ -115,6 +118,7 @@ CaseLook exhibit_light(const ExhibitParams& p) {
 
 CaseLook exhibit_look(const glm::mat4& model, const ExhibitParams& p, const ExhibitPose& pose) {
   CaseLook look = exhibit_light(p);
+  look.hit_mask = p.hit_mask;
   const float world_scale = glm::length(glm::vec3(model[0]));
   for (int i = 0; i < BODY_COUNT; ++i) {
     const BodyPose& b = pose[size_t(i)];

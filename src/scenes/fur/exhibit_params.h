@@ -26,6 +26,7 @@ struct ExhibitParams {
   PhysicsInputs physics{};
   double displacement_strength = 0.35;  // scales the spring's lag on the tips
   double light_intensity = 1.6;         // the key light
+  bool hit_mask = false;  // MarchSettings::hit_mask: colour = hit id (0, or 1 + shape index)
   static std::array<FurLook, BODY_COUNT> default_looks();
 };
 

@@ -31,9 +31,15 @@ class FurScene : public Scene {
  public:
   void prepare(const FrameContext& ctx) override {
     params_ = fur::read_exhibit_params(ctx.params);
+    params_.hit_mask = ctx.march.hit_mask;
     pose_ = fur::exhibit_pose(params_.physics, ctx.scene_time);
   }
-  glm::vec3 radiance(const Ray&, RayStats&) const override { return BACKGROUND; }
+  glm::vec3 radiance(const Ray&, RayStats&) const override {
+    return params_.hit_mask ? glm::vec3(0.0f) : BACKGROUND;
+  }
+  std::vector<ShaderUniform> shader_uniforms() const override {
+    return {{"u_hit_mask", 1, {params_.hit_mask ? 1.0f : 0.0f}}};
+  }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan = Scene::frame_plan(ctx);  // the background
     const glm::mat4 model =

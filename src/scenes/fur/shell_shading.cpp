@@ -34,6 +34,7 @@ glm::vec4 shade_shell(const ShellLook& look, const MeshFragment& f) {
   const glm::vec2 local = (uvd - cell) * 2.0f - 1.0f;
   const float rnd = dm::mix(STRAND_MIN, STRAND_MAX, strand_random(int(cell.x), int(cell.y)));
   if (h > 0.0f && glm::length(local) > look.thickness * (rnd - h)) return glm::vec4(0.0f);
+  if (look.hit_id >= 0.0f) return glm::vec4(glm::vec3(look.hit_id), 1.0f);
   const glm::vec3 n = glm::normalize(f.world_normal);
   // The seed's half-Lambert: N.L clamped, then * 0.5 + 0.5, squared.
   float lit = dm::clamp(glm::dot(n, look.light_dir), 0.0f, 1.0f) * 0.5f + 0.5f;

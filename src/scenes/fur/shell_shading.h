@@ -19,6 +19,7 @@ struct ShellLook {
   float density = 1.0f, thickness = 1.0f;
   glm::vec3 base{0.0f}, tip{0.0f};
   glm::vec3 light_dir{0.0f, 1.0f, 0.0f}, light{1.0f}, ambient{0.0f};
+  float hit_id = -1.0f;  // >= 0: draw this id instead of the colour (MarchSettings::hit_mask)
 };
 
 // Instance data of shell i of n: (h, fake AO, physics weight k, i), constant per shell.
