@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <variant>
 
 #include "backends/cpu/plan_runner.h"
 #include "scenes/registry.h"
@@ -50,7 +51,12 @@ TEST(ResolvedRayPass, SameBitsAsThePlanRunOncePerSample) {
     EXPECT_EQ(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)), 0)
         << info.name;
     EXPECT_EQ(a.sdf_evals, b.sdf_evals) << info.name;
-    EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    // A scene drawn by mesh passes (fur: only its background is a ray pass) marches nothing.
+    bool meshes = false;
+    for (const Pass& p : resolved.passes) meshes = meshes || std::holds_alternative<MeshPass>(p);
+    if (!meshes) {
+      EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    }
   }
 }
 
