@@ -28,6 +28,7 @@
 #include "bench/reference_cache.h"
 #include "bench/sweep.h"
 #include "bench/table.h"
+#include "cli/bench_io.h"
 #include "cli/commands_impl.h"
 #include "cli/frame_range.h"
 #include "scenes/registry.h"
@@ -328,6 +329,7 @@ int run_bench(const BenchOptions& o) {
   std::filesystem::create_directories(o.out);
 
   std::vector<BenchRow> rows;
+  std::vector<bench::IoRow> io_rows;
   int failures = 0;
   for (const BenchTarget& t : targets) {
     const Reference ref = reference_of(t, o);
@@ -371,6 +373,10 @@ int run_bench(const BenchOptions& o) {
       }
       for (size_t k = 0; k < measured.size(); ++k)
         rows[first + k].seconds_per_frame = median(times[k]);
+      std::fprintf(stderr, "bench: %s %s start-up and frame writing\n", t.label.c_str(),
+                   backend.c_str());
+      io_rows.push_back(
+          measure_io_row(t.label, t.tl.path, *pipe, backend, t.frames, o.repetitions, o.out));
     }
   }
   mark_fronts(rows);
@@ -380,6 +386,7 @@ int run_bench(const BenchOptions& o) {
                 o.out.c_str());
   print_preset_check(rows);
   bench::write_csv_file(o.out + "/bench.csv", rows);
+  report_io_rows(io_rows, o.out);
   for (const BenchTarget& t : targets) {
     std::vector<BenchRow> mine;
     for (const BenchRow& r : rows)

@@ -16,14 +16,23 @@ long fault_at() {
 }
 
 std::atomic<long> g_operations{0};
+thread_local int t_paused = 0;
 
 }  // namespace
 
 bool inject_io_fault() {
   const long at = fault_at();
-  if (at <= 0 || g_operations.fetch_add(1) + 1 != at) return false;
+  if (at <= 0 || t_paused > 0 || g_operations.fetch_add(1) + 1 != at) return false;
   errno = ENOSPC;
   return true;
+}
+
+FaultInjectionPause::FaultInjectionPause() {
+  ++t_paused;
+}
+
+FaultInjectionPause::~FaultInjectionPause() {
+  --t_paused;
 }
 
 }  // namespace sdfreel

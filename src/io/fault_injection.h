@@ -7,4 +7,14 @@ namespace sdfreel {
 // True when this operation must fail; sets errno to ENOSPC then.
 bool inject_io_fault();
 
+// While one lives, this thread's operations are neither counted nor failed (cache files: not
+// outputs of the render, and written only when the cache misses).
+class FaultInjectionPause {
+ public:
+  FaultInjectionPause();
+  ~FaultInjectionPause();
+  FaultInjectionPause(const FaultInjectionPause&) = delete;
+  FaultInjectionPause& operator=(const FaultInjectionPause&) = delete;
+};
+
 }  // namespace sdfreel
