@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev opencolorio-tools libglm-dev
+  libpng-dev libopenexr-dev libopencolorio-dev opencolorio-tools libglm-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libosmesa6-dev libtomlplusplus-dev libcli11-dev libfmt-dev libtbb-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev

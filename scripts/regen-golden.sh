@@ -9,6 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 root=$PWD
+# Files sdfreel can remake (the lenticular card's source views) stay in the build tree, as in tests.
+export SDFREEL_CACHE_DIR=${SDFREEL_CACHE_DIR:-$root/build/test-cache}
 data_lines() { grep -v '^#' "$1"; }
 for timeline in tests/golden/*/*.toml; do
   scene=$(basename "$(dirname "$timeline")")

@@ -6,6 +6,12 @@ const int LIGHT_COUNT = 4;
 const int BEAM_COUNT = 4;
 const int OCCLUDER = LIGHT_COUNT + BEAM_COUNT;
 const int SHAPE_COUNT = OCCLUDER + 1;
+const int MAX_PAIR_CROSSINGS = 8;
+const int MAX_CROSSINGS = 64;
+const int PAIR_CROSSING = 0;
+const int PAIR_APART = 1;
+const int PAIR_FIRST_INSIDE = 2;
+const int PAIR_SECOND_INSIDE = 3;
 
 const int ESTIMATOR_SEED_RAY = 0;
 const int ESTIMATOR_PENUMBRA = 1;
@@ -23,6 +29,10 @@ struct BeamsUniforms {
   float min_hit_dist;
   float max_trace_dist;
   int hit_mask;
+  vec2 crossings[MAX_CROSSINGS];
+  int crossing_first[SHAPE_COUNT * SHAPE_COUNT + 1];
+  int pair_mode[SHAPE_COUNT * SHAPE_COUNT];
+  vec4 pair_line[SHAPE_COUNT * SHAPE_COUNT];
 };
 
 uniform BeamsUniforms u_beams;

@@ -3,6 +3,7 @@
 // mirrored here: tests/osmesa compares the two backends' frames.
 #include "common/sample_loop.glsl"
 #include "sdf_morph/geometry.glsl"
+#include "sdf_morph/shading.glsl"
 
 uniform MorphUniforms u_morph;
 
@@ -18,10 +19,6 @@ const float SOFTBOX_MIN_COS = 0.05;
 const float SOFTBOX_EDGE = 0.02;
 const float SOFTBOX_GLOW = 0.04;
 const float SOFTBOX_GLOW_FALLOFF = 8.0;
-
-const vec3 KEY_COLOR = vec3(1.0, 0.96, 0.9);
-const vec3 AMBIENT_SKY = vec3(0.22, 0.22, 0.24);
-const vec3 AMBIENT_GROUND = vec3(0.08, 0.075, 0.07);
 
 const vec3 PEDESTAL_ALBEDO = vec3(0.5, 0.485, 0.47);
 const float PEDESTAL_F0 = 0.03;
@@ -118,12 +115,6 @@ float surfaceBias(float eps) { return dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACT
 
 vec3 reflectDir(vec3 d, vec3 n) { return d - 2.0 * dm_dot(n, d) * n; }
 
-float schlick(float cos_theta, float f0) {
-  precise float x = 1.0 - dm_clamp(cos_theta, 0.0, 1.0);
-  precise float x2 = x * x;
-  return f0 + (1.0 - f0) * (x2 * x2 * x);
-}
-
 vec3 softBox(vec3 d, SoftBox box) {
   precise float c = dm_dot(d, box.dir);
   if (c <= SOFTBOX_MIN_COS) return vec3(0.0);
@@ -145,15 +136,6 @@ float ambientOcclusion(vec3 p, vec3 n, MorphUniforms u, inout RayStats stats) {
     scale *= AO_FALLOFF;
   }
   return dm_clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
-}
-
-vec3 ambientLight(vec3 n, MorphUniforms u) {
-  return u.env_intensity * dm_mix(AMBIENT_GROUND, AMBIENT_SKY, 0.5 + 0.5 * n.y);
-}
-
-vec3 diffuseLight(vec3 albedo, vec3 n, float shadow, float ao, MorphUniforms u) {
-  precise float ndl = dm_max(dm_dot(n, u.boxes[0].dir), 0.0);
-  return albedo * (u.key_intensity * ndl * shadow * KEY_COLOR + ambientLight(n, u) * ao);
 }
 
 void occlusion(vec3 p, vec3 n, float bias, bool full, MorphUniforms u, inout RayStats stats,

@@ -1,12 +1,12 @@
 #include "bench/canvas.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "bench/bitmap_font.h"
-#include "io/image_write.h"
+#include "io/atomic_file.h"
+#include "io/png_file.h"
 
 namespace sdfreel::bench {
 
@@ -107,8 +107,12 @@ void Canvas::write_png(const std::string& path) const {
   std::vector<uint8_t> bytes(px_.size());
   for (size_t i = 0; i < px_.size(); ++i)
     bytes[i] = uint8_t(std::lround(std::clamp(px_[i], 0.0f, 1.0f) * 255.0f));
-  write_image_atomic(path, "png", OIIO::ImageSpec(w_, h_, 3, OIIO::TypeDesc::UINT8),
-                     OIIO::TypeDesc::UINT8, bytes.data());
+  try {
+    const std::vector<unsigned char> png = encode_png(w_, h_, 3, 8, bytes.data(), {6, -1, 0});
+    write_file_atomic(path, png.data(), png.size());
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot write the plot " + path + ": " + e.what());
+  }
 }
 
 }  // namespace sdfreel::bench

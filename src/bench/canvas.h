@@ -25,7 +25,7 @@ class Canvas {
   // upwards) when `vertical`. Returns the text's advance in pixels.
   int text(int x, int y, const std::string& s, Rgb c, bool vertical = false);
   static int text_width(const std::string& s);
-  // 8-bit sRGB-ish PNG (the colours are display values already) through OpenImageIO.
+  // 8-bit sRGB-ish PNG (the colours are display values already) through libpng.
   void write_png(const std::string& path) const;
 
  private:

@@ -19,6 +19,7 @@ int run_cli(int argc, char** argv) {
   add_scenes_command(app, status);
   add_bench_command(app, status);
   add_slurm_command(app, status);
+  add_interlace_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

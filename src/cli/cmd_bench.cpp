@@ -28,6 +28,7 @@
 #include "bench/reference_cache.h"
 #include "bench/sweep.h"
 #include "bench/table.h"
+#include "cli/bench_io.h"
 #include "cli/commands_impl.h"
 #include "cli/frame_range.h"
 #include "scenes/registry.h"
@@ -119,6 +120,8 @@ FrameContext bench_context(const FramePipeline& pipe, int frame, const BenchConf
   FrameContext ctx = frame_context(pipe.timeline(), pipe.scene(), frame);
   ctx.quality = cfg.quality;
   ctx.samples = mask ? 1 : cfg.samples;
+  ctx.adaptive = cfg.adaptive;
+  ctx.adaptive.enabled = cfg.adaptive.enabled && !mask;
   finish_frame_context(ctx);
   ctx.march = cfg.march;
   ctx.march.hit_mask = mask;
@@ -188,12 +191,13 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   const std::vector<FrameContext> contexts = bench_contexts(pipe, t, cfg);
   bench::ErrorAccumulator error;
   RayStats stats;
-  double seconds = 0.0;
+  double seconds = 0.0, samples = 0.0;
   for (size_t i = 0; i < contexts.size(); ++i) {
     const RenderedFrame f = pipe.render_context(contexts[i]);
     seconds += f.seconds;
     error.add(f.display, ref.display[i]);
     stats.add(f.stats);
+    for (uint16_t n : pipe.backend().sample_counts()) samples += n;
   }
   times.push_back(seconds / double(contexts.size()));
   row.seconds_per_frame = times.back();
@@ -207,6 +211,7 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   row.p99_abs_error = m.p99_abs_error;
   row.hitmiss_fraction = hits.fraction();
   const double pixels = double(t.tl.width) * t.tl.height * double(t.frames.size());
+  row.mean_samples = samples / pixels;
   row.sdf_evals_per_pixel = double(stats.sdf_evals) / pixels;
   // Only the CPU backend counts rays that ran out of steps (the shader reports SDF evaluations).
   row.capped_per_pixel =
@@ -324,6 +329,7 @@ int run_bench(const BenchOptions& o) {
   std::filesystem::create_directories(o.out);
 
   std::vector<BenchRow> rows;
+  std::vector<bench::IoRow> io_rows;
   int failures = 0;
   for (const BenchTarget& t : targets) {
     const Reference ref = reference_of(t, o);
@@ -367,6 +373,10 @@ int run_bench(const BenchOptions& o) {
       }
       for (size_t k = 0; k < measured.size(); ++k)
         rows[first + k].seconds_per_frame = median(times[k]);
+      std::fprintf(stderr, "bench: %s %s start-up and frame writing\n", t.label.c_str(),
+                   backend.c_str());
+      io_rows.push_back(
+          measure_io_row(t.label, t.tl.path, *pipe, backend, t.frames, o.repetitions, o.out));
     }
   }
   mark_fronts(rows);
@@ -376,6 +386,7 @@ int run_bench(const BenchOptions& o) {
                 o.out.c_str());
   print_preset_check(rows);
   bench::write_csv_file(o.out + "/bench.csv", rows);
+  report_io_rows(io_rows, o.out);
   for (const BenchTarget& t : targets) {
     std::vector<BenchRow> mine;
     for (const BenchRow& r : rows)

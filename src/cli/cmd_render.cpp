@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
@@ -10,6 +11,7 @@
 #include "io/folder_claim.h"
 #include "io/frame_files.h"
 #include "io/video_encoder.h"
+#include "pipeline/frame_writer.h"
 
 namespace sdfreel {
 
@@ -88,6 +90,9 @@ int run_render(const RenderOptions& o) {
         VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf});
 
   Progress progress(int(frames.size()));
+  // Files, journal lines, video frames and progress lines go through one writer thread, in frame
+  // order, while the next frame renders. Only that thread writes until finish().
+  FrameWriter writer;
   try {
     for (int i : frames) {
       if (previous) {
@@ -95,17 +100,25 @@ int run_render(const RenderOptions& o) {
         if (it != previous->frames.end()) {
           if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
             // Already listed in the manifest consolidated above.
-            if (encoder) encoder->add_frame(*shown);
-            progress.frame_done(i, 0.0, true);
+            writer.push([&progress, enc = encoder.get(), i, shown = std::move(*shown)] {
+              if (enc) enc->add_frame(shown);
+              progress.frame_done(i, 0.0, true);
+            });
             continue;
           }
         }
       }
-      RenderedFrame f = pipe.render(i);
-      publish_frame(dir, tl, header, f, encoder.get());
-      progress.frame_done(i, f.seconds);
+      auto f = std::make_shared<const RenderedFrame>(pipe.render(i));
+      writer.push([&, f] {
+        publish_frame(dir, tl, header, *f, encoder.get());
+        progress.frame_done(f->index, f->seconds);
+      });
     }
+    writer.finish();
   } catch (const std::exception&) {
+    // A render failure: the frames rendered before it are still written (a write failure has
+    // stopped the writer already), and nothing writes while the manifest is consolidated.
+    writer.finish_quietly();
     // The frames finished before the failure are listed in manifest.json and frames.framemd5
     // too, not only in the journal (best effort: the disk may be full).
     try {

@@ -16,12 +16,13 @@ std::atomic<long>& fault_at() {
 }
 
 std::atomic<long> g_operations{0};
+thread_local int t_paused = 0;
 
 }  // namespace
 
 bool inject_io_fault() {
   const long at = fault_at().load(std::memory_order_relaxed);
-  if (at <= 0 || g_operations.fetch_add(1) + 1 != at) return false;
+  if (at <= 0 || t_paused > 0 || g_operations.fetch_add(1) + 1 != at) return false;
   errno = ENOSPC;
   return true;
 }
@@ -29,6 +30,14 @@ bool inject_io_fault() {
 void set_io_fault_at(long n) {
   g_operations = 0;
   fault_at() = n;
+}
+
+FaultInjectionPause::FaultInjectionPause() {
+  ++t_paused;
+}
+
+FaultInjectionPause::~FaultInjectionPause() {
+  --t_paused;
 }
 
 }  // namespace sdfreel

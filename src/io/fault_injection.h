@@ -11,4 +11,14 @@ bool inject_io_fault();
 // SDFREEL_FAULT_AT=N does for a whole process.
 void set_io_fault_at(long n);
 
+// While one lives, this thread's operations are neither counted nor failed (cache files: not
+// outputs of the render, and written only when the cache misses).
+class FaultInjectionPause {
+ public:
+  FaultInjectionPause();
+  ~FaultInjectionPause();
+  FaultInjectionPause(const FaultInjectionPause&) = delete;
+  FaultInjectionPause& operator=(const FaultInjectionPause&) = delete;
+};
+
 }  // namespace sdfreel

@@ -1,5 +1,5 @@
 #pragma once
-// Frame files through OpenImageIO, written atomically (temporary file in the same folder, then
+// Frame files (OpenEXR, libpng), written atomically (temporary file in the same folder, then
 // rename): a killed render never leaves a truncated frame.
 #include <map>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenEXR/OpenEXRConfig.h>
-#include <OpenImageIO/oiioversion.h>
+#include <png.h>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -22,7 +22,7 @@ std::string av_version_string(unsigned v) {
 }  // namespace
 
 std::map<std::string, std::string> io_library_versions() {
-  return {{"openimageio", OIIO_VERSION_STRING},
+  return {{"libpng", PNG_LIBPNG_VER_STRING},
           {"opencolorio", OCIO_NAMESPACE::GetVersion()},
           {"openexr", OPENEXR_VERSION_STRING},
           {"libavcodec", av_version_string(avcodec_version())},

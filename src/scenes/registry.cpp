@@ -8,7 +8,10 @@
   SCENE(sdf_morph)            \
   SCENE(lantern_festival)     \
   SCENE(water_lily)           \
-  SCENE(light_beams)
+  SCENE(light_beams)          \
+  SCENE(lenticular_card)      \
+  SCENE(museum)               \
+  SCENE(fur)
 
 namespace sdfreel {
 

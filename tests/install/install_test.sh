@@ -49,7 +49,7 @@ done
 deb=$(ls "$tmp"/pkg/sdfreel_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "package: $(basename "$deb"), Depends: $depends"
-for lib in libopenimageio libopencolorio libavcodec libtbb; do
+for lib in libpng16 libopenexr libopencolorio libavcodec libtbb; do
   [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib"
 done
 if [[ " ${backends[*]} " == *" osmesa "* ]]; then

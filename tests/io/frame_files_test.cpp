@@ -2,7 +2,9 @@
 #include "io/frame_files.h"
 
 #include <Imath/half.h>
-#include <OpenImageIO/imageio.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -14,6 +16,8 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/exr_file.h"
 
 namespace fs = std::filesystem;
 
@@ -136,12 +140,15 @@ TEST(Exr, RoundTripsAsHalvesWithMetadata) {
   }
   EXPECT_GT(changed, 0u);  // the data really went through half precision
 
-  auto in = OIIO::ImageInput::open(dir.file("00012.exr"));
-  ASSERT_TRUE(in);
-  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
-  EXPECT_EQ(in->spec().nchannels, 4);
-  EXPECT_EQ(in->spec().get_string_attribute("sdfreel:scene"), "lantern_festival");
-  EXPECT_EQ(in->spec().get_string_attribute("sdfreel:frame"), "12");
+  Imf::InputFile in(dir.file("00012.exr").c_str());
+  int channels = 0;
+  for (auto c = in.header().channels().begin(); c != in.header().channels().end(); ++c, ++channels)
+    EXPECT_EQ(c.channel().type, Imf::HALF) << c.name();
+  EXPECT_EQ(channels, 4);
+  EXPECT_EQ(in.header().compression(), Imf::PIZ_COMPRESSION);
+  const auto strings = read_exr_strings(dir.file("00012.exr"));
+  EXPECT_EQ(strings.at("sdfreel:scene"), "lantern_festival");
+  EXPECT_EQ(strings.at("sdfreel:frame"), "12");
 }
 
 TEST(Exr, SameImageGivesTheSameFileBytes) {

@@ -6,15 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
-#include <filesystem>
-
 #include "backends/cpu/plan_runner.h"
 #include "backends/osmesa/gl_plan_runner.h"
-#include "io/frame_files.h"
-#include "osmesa/image_compare.h"
+#include "osmesa/filament_rule.h"
 #include "osmesa/osmesa_fixture.h"
 
 namespace sdfreel {
@@ -22,64 +16,22 @@ namespace {
 
 using test::OsmesaTest;
 
-constexpr double MAX_SHARE_OVER_5 = 0.001;  // Filament: 0.1% of pixels
-constexpr double MAX_MEAN = 0.5;            // in 1/255
-
-// Display values for the comparison: clamp, sRGB-like 1/2.2 power, 16 bits.
-ImageRGB16 display(const ImageRGBA& linear) {
-  ImageRGB16 out(linear.width, linear.height);
-  for (size_t i = 0, o = 0; i < linear.pixels.size(); i += 4)
-    for (int c = 0; c < 3; ++c) {
-      const double v = std::clamp(double(linear.pixels[i + size_t(c)]), 0.0, 1.0);
-      out.pixels[o++] = uint16_t(std::lround(std::pow(v, 1.0 / 2.2) * 65535.0));
-    }
-  return out;
-}
-
-double share_over(const ImageRGB16& a, const ImageRGB16& b, double limit_255) {
-  size_t over = 0;
-  for (size_t i = 0; i < a.pixels.size(); i += 3) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c)
-      worst =
-          std::max(worst, std::abs(int(a.pixels[i + size_t(c)]) - int(b.pixels[i + size_t(c)])));
-    over += worst * (255.0 / 65535.0) > limit_255;
-  }
-  return double(over) / double(a.pixels.size() / 3);
-}
-
-void save(const std::string& dir, const std::string& name, const ImageRGB16& img) {
-  std::filesystem::create_directories(dir);
-  write_png16_atomic(dir + "/" + name, img);
-}
-
 TEST_F(OsmesaTest, MixedPlanCpuAgreesWithGlByFilamentsRule) {
   const FrameContext ctx = test::mixed_context(160, 90, 4);
   const FramePlan plan = test::mixed_plan(ctx);
   GlPlanRunner runner(*driver);
   RayStats gl_stats, cpu_stats, cpu2_stats;
-  const ImageRGB16 gl = display(runner.run(plan, ctx, {}, gl_stats));
-  const ImageRGBA cpu_linear = run_plan_cpu(plan, ctx, CpuRunSettings{1, 16, true}, cpu_stats);
-  const ImageRGB16 cpu = display(cpu_linear);
-  EXPECT_EQ(run_plan_cpu(plan, ctx, CpuRunSettings{2, 7, true}, cpu2_stats).pixels,
-            cpu_linear.pixels);
+  const ImageRGBA gl = runner.run(plan, ctx, {}, gl_stats);
+  const ImageRGBA cpu = run_plan_cpu(plan, ctx, CpuRunSettings{1, 16, true}, cpu_stats);
+  EXPECT_EQ(run_plan_cpu(plan, ctx, CpuRunSettings{2, 7, true}, cpu2_stats).pixels, cpu.pixels);
   // (SDF evaluation counts differ by design here: GL's sdf_evals target keeps only fragments that
   // were written, so discarded and depth-failed rays of the sphere go uncounted.)
-  const test::DisplayDifference d = test::compare_display(cpu, gl);
-  const double share = share_over(cpu, gl, 5.0);
-  std::printf("mixed plan 160x90x4: mean %.4f/255, share over 5/255 %.4f%%, max %.2f/255\n", d.mean,
-              share * 100.0, d.max);
-  const char* keep = std::getenv("SDFREEL_TEST_IMAGES");
-  const bool fail = share > MAX_SHARE_OVER_5 || d.mean >= MAX_MEAN;
-  if (keep || fail) {
-    const std::string dir = keep ? keep : ::testing::TempDir() + "sdfreel-mixed-plan";
-    save(dir, "cpu.png", cpu);
-    save(dir, "gl.png", gl);
-    save(dir, "diff.png", test::difference_image(cpu, gl, 16.0));
-    std::printf("images in %s\n", dir.c_str());
-  }
-  EXPECT_LE(share, MAX_SHARE_OVER_5);
-  EXPECT_LT(d.mean, MAX_MEAN);
+  const test::FilamentVerdict v = test::filament_compare(cpu, gl, "mixed-plan");
+  std::printf("mixed plan 160x90x4: mean %.4f/255, share over 5/255 %.4f%%, max %.2f/255\n", v.mean,
+              v.share_over_5 * 100.0, v.max);
+  if (!v.images.empty()) std::printf("images in %s\n", v.images.c_str());
+  EXPECT_LE(v.share_over_5, test::FILAMENT_MAX_SHARE_OVER_5);
+  EXPECT_LT(v.mean, test::FILAMENT_MAX_MEAN);
 }
 
 TEST_F(OsmesaTest, RayPassWithDepthIsBitIdentical) {
@@ -94,6 +46,30 @@ TEST_F(OsmesaTest, RayPassWithDepthIsBitIdentical) {
   int lit = 0;  // the sphere is in view
   for (size_t i = 0; i < cpu.pixels.size(); i += 4) lit += cpu.pixels[i] > 0.0f;
   EXPECT_GT(lit, 100);
+}
+
+// Adaptive sampling through the per-sample loop of both runners (a ray pass with depth is not run
+// per pixel): the same samples a pixel, the same sums, edges sampled more than the flat inside.
+TEST_F(OsmesaTest, AdaptiveRayPassWithDepthIsBitIdentical) {
+  FrameContext ctx = test::mixed_context(64, 36, 1);
+  ctx.adaptive = AdaptiveSampling{true, 2, 6, 0.01f};
+  finish_frame_context(ctx);
+  FramePlan plan = test::mixed_plan(ctx);
+  plan.passes.erase(plan.passes.begin());
+  GlPlanRunner runner(*driver);
+  RayStats stats;
+  SampleCounts gl_counts, cpu_counts;
+  const ImageRGBA gl = runner.run(plan, ctx, {}, stats, &gl_counts);
+  const ImageRGBA cpu = run_plan_cpu(plan, ctx, {}, stats, &cpu_counts);
+  EXPECT_EQ(gl.pixels, cpu.pixels);
+  EXPECT_EQ(gl_counts, cpu_counts);
+  int at_min = 0, at_max = 0;
+  for (uint16_t n : cpu_counts) {
+    at_min += n == 2;
+    at_max += n == 6;
+  }
+  EXPECT_GT(at_min, 100);
+  EXPECT_GT(at_max, 10);
 }
 
 }  // namespace

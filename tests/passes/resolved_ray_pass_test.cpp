@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "backends/cpu/cpu_ray_pass_resolved.h"
 #include "backends/cpu/plan_runner.h"
 #include "scenes/registry.h"
 
@@ -40,6 +41,8 @@ TEST(ResolvedRayPass, SameBitsAsThePlanRunOncePerSample) {
     const FrameContext ctx = scene_context(info);
     scene->prepare(ctx);
     const FramePlan resolved = scene->frame_plan(ctx);
+    // Plans of several passes (museum) never take the one-pass path: nothing to compare.
+    if (!resolvable_ray_pass(resolved)) continue;
     FramePlan per_sample = resolved;
     per_sample.targets.push_back({"side", TargetKind::Colour, glm::vec4(0.0f)});
     per_sample.passes.push_back(side_pass());
@@ -50,7 +53,10 @@ TEST(ResolvedRayPass, SameBitsAsThePlanRunOncePerSample) {
     EXPECT_EQ(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)), 0)
         << info.name;
     EXPECT_EQ(a.sdf_evals, b.sdf_evals) << info.name;
-    EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    // A scene without marches (lenticular_card meets its boxes analytically) counts none.
+    if (!scene->distance_functions().empty()) {
+      EXPECT_GT(a.sdf_evals, 0u) << info.name;
+    }
   }
 }
 

@@ -2,8 +2,10 @@
 // reflections, sky).
 #include "scenes/lantern_festival/scene.h"
 
+#include <cstdio>
 #include <mutex>
 
+#include "scenes/common/texture_cache.h"
 #include "scenes/lantern_festival/generated_textures.h"
 
 namespace sdfreel::lantern_festival {
@@ -41,11 +43,32 @@ std::unique_ptr<LanternTextures> make_lantern_textures(uint32_t seed) {
   return t;
 }
 
+std::unique_ptr<LanternTextures> cached_lantern_textures(uint32_t seed) {
+  char key[160];
+  std::snprintf(key, sizeof key,
+                "lantern_festival textures: seed=%u blue_noise=%dx4 paper=%d sky=%dx%d/%d", seed,
+                BLUE_NOISE_SIZE, PAPER_MAP_SIZE, SKY_WIDTH, SKY_HEIGHT, SKY_REFLECTION_DOWNSAMPLE);
+  std::vector<Texture> list = cached_textures(key, [seed] {
+    std::unique_ptr<LanternTextures> t = make_lantern_textures(seed);
+    return std::vector<Texture>{std::move(t->blue_noise), std::move(t->paper_normal),
+                                std::move(t->paper_noise), std::move(t->sky),
+                                std::move(t->sky_blurred)};
+  });
+  auto t = std::make_unique<LanternTextures>();
+  t->seed = seed;
+  t->blue_noise = std::move(list.at(0));
+  t->paper_normal = std::move(list.at(1));
+  t->paper_noise = std::move(list.at(2));
+  t->sky = std::move(list.at(3));
+  t->sky_blurred = std::move(list.at(4));
+  return t;
+}
+
 std::shared_ptr<const LanternTextures> lantern_textures(uint32_t seed) {
   static std::mutex mutex;
   static std::shared_ptr<const LanternTextures> last;
   const std::lock_guard<std::mutex> lock(mutex);
-  if (!last || last->seed != seed) last = make_lantern_textures(seed);
+  if (!last || last->seed != seed) last = cached_lantern_textures(seed);
   return last;
 }
 

@@ -20,7 +20,10 @@ struct LanternTextures {
   Texture blue_noise, paper_normal, paper_noise, sky, sky_blurred;
 };
 std::unique_ptr<LanternTextures> make_lantern_textures(uint32_t seed);
-// The textures of `seed`, shared: made once and reused while the seed stays the same (every
+// The same textures through the cache folder (scenes/common/texture_cache.h): read when a file of
+// this seed, these sizes and this build is intact there, else made and stored.
+std::unique_ptr<LanternTextures> cached_lantern_textures(uint32_t seed);
+// The textures of `seed`, shared: loaded once and reused while the seed stays the same (every
 // frame of a render, and scenes created one after another by the bench or the tests).
 std::shared_ptr<const LanternTextures> lantern_textures(uint32_t seed);
 

@@ -1,5 +1,6 @@
 #include "scenes/light_beams/lanes.h"
 
+#include "scenes/light_beams/crossings.h"
 #include "scenes/light_beams/render.h"
 #include "scenes/light_beams/visibility.h"
 
@@ -120,15 +121,45 @@ P8 discSpan8(P8 p, P8 n, vec2 c, float r) {
   return P8{phi - half, phi + half};
 }
 
-P8 angularSpan8(P8 p, P8 n, const Shape& s) {
-  if (s.type == SHAPE_CIRCLE) return discSpan8(p, n, s.a, s.r);
+// What angularSpan (shapes.h) computes of a shape at the packet's points whatever the direction n,
+// once per packet instead of once per light: its distance, and for a circle c - p and the half
+// angle, for a capsule the unit direction m to its core and the hull of its end discs' spans around
+// m. spanFrom8 then adds the one angle that depends on n: the same operations, the same bits.
+struct ShapeView8 {
+  F8 sdf;
+  P8 v;       // circle: c - p; capsule: m
+  F8 lo, hi;  // circle: -half, +half (unused); capsule: the hull relative to m
+};
+
+ShapeView8 shapeView8(P8 p, const Shape& s) {
+  ShapeView8 sv;
+  sv.sdf = shapeSDF8(p, s);
+  if (s.type == SHAPE_CIRCLE) {
+    sv.v = sub(s.a, p);
+    sv.hi = asin8(dm::min(s.r / length8(sv.v), 1.0f));
+    sv.lo = -sv.hi;
+    return sv;
+  }
   const P8 c = corePoint8(p, s);
   const P8 own{c.x - p.x, c.y - p.y};
   const F8 own_len = length8(own);
-  const P8 m = select8(own_len > 0.0f, P8{own.x / own_len, own.y / own_len}, n);
-  const P8 ea = discSpan8(p, m, s.a, s.r), eb = discSpan8(p, m, s.b, s.r);
-  const F8 turn = angleFrom8(n, m);
-  return P8{dm::min(ea.x, eb.x) + turn, dm::max(ea.y, eb.y) + turn};
+  // own_len == 0: p on the core, inside the shape; angularSpan's fallback (n) is never used.
+  sv.v =
+      select8(own_len > 0.0f, P8{own.x / own_len, own.y / own_len}, P8{splat(1.0f), splat(0.0f)});
+  const P8 ea = discSpan8(p, sv.v, s.a, s.r), eb = discSpan8(p, sv.v, s.b, s.r);
+  sv.lo = dm::min(ea.x, eb.x);
+  sv.hi = dm::max(ea.y, eb.y);
+  return sv;
+}
+
+// angularSpan(p, n, s) in lanes, from the shape's view.
+P8 spanFrom8(P8 n, const ShapeView8& sv, const Shape& s) {
+  if (s.type == SHAPE_CIRCLE) {
+    const F8 phi = angleFrom8(n, sv.v);
+    return P8{phi - sv.hi, phi + sv.hi};
+  }
+  const F8 turn = angleFrom8(n, sv.v);
+  return P8{sv.lo + turn, sv.hi + turn};
 }
 
 F8 hitDisc8(P8 p, P8 dir, vec2 c, float r) {
@@ -170,13 +201,13 @@ struct LightView8 {
   P8 n, span;
 };
 
-LightView8 viewOf8(P8 p, const Shape& light) {
+LightView8 viewOf8(P8 p, const Shape& light, const ShapeView8& sv) {
   const P8 c = corePoint8(p, light);
   const P8 v{c.x - p.x, c.y - p.y};
   const F8 len = length8(v);
   LightView8 lv;
   lv.n = select8(len > 0.0f, P8{v.x / len, v.y / len}, P8{splat(1.0f), splat(0.0f)});
-  lv.span = angularSpan8(p, lv.n, light);
+  lv.span = spanFrom8(lv.n, sv, light);
   return lv;
 }
 
@@ -185,23 +216,70 @@ P8 turn8(P8 n, F8 a) {
   return P8{n.x * c - n.y * s, n.x * s + n.y * c};
 }
 
-// hiddenSpan: (lo, hi) where `hidden`, as the scalar code returns them. Lanes outside `alive`
-// are don't-cares: when no alive lane's spans overlap, the depth test is skipped (as the scalar
-// code skips it for each point whose spans do not overlap).
-P8 hiddenSpan8(P8 p, const LightView8& lv, const Shape& light, const Shape& other, M8 alive,
-               M8& hidden) {
-  const P8 o = angularSpan8(p, lv.n, other);
-  const F8 lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
-  if (!any(alive & (lo < hi))) {
-    hidden = splat_mask(false);
-    return P8{lo, hi};
-  }
-  const P8 dir = turn8(lv.n, 0.5f * (lo + hi));
+// inFront for each lane.
+M8 inFront8(P8 p, P8 n, F8 a, const Shape& light, const Shape& other) {
+  const P8 dir = turn8(n, a);
   const F8 t_other = hitShape8(p, dir, other);
   const F8 t_light = hitShape8(p, dir, light);
-  const M8 behind = (t_other == NO_HIT) | ((t_light != NO_HIT) & (t_light < t_other));
-  hidden = (lo < hi) & ~behind;
-  return P8{lo, hi};
+  return ~((t_other == NO_HIT) | ((t_light != NO_HIT) & (t_light < t_other)));
+}
+
+// mayBeInFront for each lane.
+M8 mayBeInFront8(P8 p, int light, int j, const BeamsUniforms& u) {
+  const int pair = pairIndex(light, j);
+  const int mode = u.pair_mode[pair];
+  if (mode == PAIR_APART) {
+    const glm::vec4 line = u.pair_line[pair];
+    const F8 side = (p.x - line.x) * line.z + (p.y - line.y) * line.w;
+    return j > light ? side > 0.0f : side < 0.0f;
+  }
+  const bool may =
+      mode == PAIR_CROSSING || mode == (light < j ? PAIR_FIRST_INSIDE : PAIR_SECOND_INSIDE);
+  return splat_mask(may);
+}
+
+// hiddenParts for the lanes in `alive` (where mayBeInFront8): returns the hidden width and appends
+// slots to slots[n...]
+// ((start, end) where hidden, start EMPTY_SLOT where not). A part that no alive lane needs
+// (empty, or spans that do not overlap) is not tested, as the scalar code skips it; a part
+// hidden in no lane adds no slot (EMPTY_SLOT slots change nothing in the union).
+F8 hiddenParts8(P8 p, const LightView8& lv, int light, int j, M8 alive, const BeamsUniforms& u,
+                const ShapeView8* views, P8* slots, int& n) {
+  const Shape &l = u.shapes[light], &other = u.shapes[j];
+  F8 hidden_width = splat(0.0f);
+  const P8 o = spanFrom8(lv.n, views[j], other);
+  const F8 lo = dm::max(lv.span.x, o.x), hi = dm::min(lv.span.y, o.y);
+  alive &= lo < hi;
+  if (!any(alive)) return hidden_width;
+  const int pair = pairIndex(light, j);
+  if (u.pair_mode[pair] != PAIR_CROSSING) {
+    if (slots) slots[n++] = P8{select(alive, lo, splat(EMPTY_SLOT)), hi};
+    return select(alive, hi - lo, hidden_width);
+  }
+  F8 cuts[MAX_PAIR_CROSSINGS];
+  int cut_count = 0;
+  for (int k = u.crossing_first[pair]; k < u.crossing_first[pair + 1]; ++k)
+    cuts[cut_count++] = dm::min(dm::max(angleFrom8(lv.n, sub(u.crossings[k], p)), lo), hi);
+  // Sorted (odd-even transposition: the same values in the same order as an insertion sort).
+  for (int round = 0; round < cut_count; ++round) {
+    for (int k = round % 2; k + 1 < cut_count; k += 2) {
+      const F8 a = cuts[k], b = cuts[k + 1];
+      cuts[k] = dm::min(a, b);
+      cuts[k + 1] = dm::max(a, b);
+    }
+  }
+  F8 start = lo;
+  for (int k = 0; k <= cut_count; ++k) {
+    const F8 end = k < cut_count ? cuts[k] : hi;
+    const M8 part = alive & (start < end);
+    if (any(part)) {
+      const M8 hidden = part & inFront8(p, lv.n, 0.5f * (start + end), l, other);
+      hidden_width = select(hidden, hidden_width + (end - start), hidden_width);
+      if (slots && any(hidden)) slots[n++] = P8{select(hidden, start, splat(EMPTY_SLOT)), end};
+    }
+    start = end;
+  }
+  return hidden_width;
 }
 
 // A cone of directions around the light's span, to skip shapes that surely miss it. Only a
@@ -249,36 +327,34 @@ void boundOf(const Shape& s, vec2& c, float& r) {
 }
 
 // penumbraVisibility / exactVisibility for the lanes in `active`.
-F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u, RayStats& stats) {
+F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u,
+               const ShapeView8* views, RayStats& stats) {
   const Shape& l = u.shapes[light];
-  const LightView8 lv = viewOf8(p, l);
+  const LightView8 lv = viewOf8(p, l, views[light]);
   const F8 width = lv.span.y - lv.span.x;
   const M8 wide = width > 0.0f;
   M8 alive = active & wide;
   M8 dark = splat_mask(false);  // inside another shape: 0
   F8 vis = splat(1.0f);
-  P8 slots[SHAPE_COUNT - 1];  // exact: the hidden intervals, in the order of the shapes
+  P8 slots[SHAPE_COUNT - 1 + MAX_CROSSINGS];  // exact: the hidden parts, in the shapes' order
   int n = 0;
   const LightCone8 cone = coneOf8(lv);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
     if (j == light) continue;
     if (!any(alive)) break;  // every lane has its answer: no more counts, no more work
     stats.sdf_evals += count_lanes(alive);
-    const M8 in = alive & (shapeSDF8(p, u.shapes[j]) <= 0.0f);
+    const M8 in = alive & (views[j].sdf <= 0.0f);
     dark |= in;
     alive &= ~in;
-    M8 hidden = splat_mask(false);
-    P8 h{splat(0.0f), splat(0.0f)};
+    // Cheap tests first: the side of the pair's separating line, then the cone.
+    const M8 may = alive & mayBeInFront8(p, light, j, u);
+    if (!any(may)) continue;
     vec2 bc;
     float br;
     boundOf(u.shapes[j], bc, br);
-    if (any(alive & ~missesCone8(p, cone, bc, br)))
-      h = hiddenSpan8(p, lv, l, u.shapes[j], alive, hidden);
-    if (exact) {
-      slots[n++] = P8{select(hidden, h.x, splat(EMPTY_SLOT)), h.y};
-    } else {
-      vis = select(alive & hidden, vis * (1.0f - (h.y - h.x) / width), vis);
-    }
+    if (!any(may & ~missesCone8(p, cone, bc, br))) continue;
+    const F8 hidden = hiddenParts8(p, lv, light, j, may, u, views, exact ? slots : nullptr, n);
+    if (!exact) vis = select(alive, vis * (1.0f - hidden / width), vis);
   }
   if (exact) {
     // Stable sort by start (odd-even transposition, swapping only on >): the scalar insertion
@@ -366,17 +442,24 @@ void radiancePacket(const RayPacket& rays, const BeamsUniforms& u, glm::vec3* ou
   const P8 p{o.x + dir.x * t, o.y + dir.y * t};
   const F8 aa_width = AA_PIXELS * (rays.pixel_angle * t);
   const bool exact = u.estimator == ESTIMATOR_EXACT;
+  const bool seed = u.estimator == ESTIMATOR_SEED_RAY;
+  if (!any(live)) {  // no ray meets the plane: nothing to evaluate, nothing to count
+    for (int i = 0; i < rays.count; ++i) out[i] = u.background;
+    return;
+  }
+  ShapeView8 views[SHAPE_COUNT];  // penumbra and exact: every shape's view, shared by the lights
+  if (!seed)
+    for (int j = 0; j < SHAPE_COUNT; ++j) views[j] = shapeView8(p, u.shapes[j]);
   F8 r = splat(u.background.x), g = splat(u.background.y), b = splat(u.background.z);
   for (int i = 0; i < OCCLUDER; ++i) {
     if (!(u.gain[i] > 0.0f)) continue;
     stats.sdf_evals += count_lanes(live);
-    const F8 d = shapeSDF8(p, u.shapes[i]);
+    const F8 d = seed ? shapeSDF8(p, u.shapes[i]) : views[i].sdf;
     const F8 fade = 1.0f * (1.0f - u.fades[i]) + cornerFade8(p) * u.fades[i];
     const F8 gain = u.gain[i] * fade;
     const M8 inside = d <= 0.0f;
-    const F8 vis = u.estimator == ESTIMATOR_SEED_RAY
-                       ? seedShadow8(p, i, d, live & ~inside, u, stats)
-                       : visibility8(p, i, live & ~inside, exact, u, stats);
+    const F8 vis = seed ? seedShadow8(p, i, d, live & ~inside, u, stats)
+                        : visibility8(p, i, live & ~inside, exact, u, views, stats);
     const F8 att = 1.0f / (u.glow_constant + u.glow_linear * d + u.glow_quadratic * (d * d));
     const glm::vec3 c = u.color[i];
     const F8 edge = smoothstep8(aa_width, d);

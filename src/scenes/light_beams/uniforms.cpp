@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "scenes/light_beams/crossings.h"
+
 namespace sdfreel::light_beams {
 namespace {
 
@@ -85,6 +87,7 @@ BeamsUniforms make_beams_uniforms(const FrameContext& ctx) {
   u.min_hit_dist = m.hit_eps;
   u.max_trace_dist = m.max_dist;
   u.hit_mask = m.hit_mask;
+  findCrossings(u);
   return u;
 }
 
@@ -122,6 +125,17 @@ std::vector<ShaderUniform> beams_shader_uniforms(const BeamsUniforms& u) {
   out.push_back(color);
   out.push_back(gain);
   out.push_back(fades);
+  ShaderUniform crossings{"u_beams.crossings", 2, {}}, first{"u_beams.crossing_first", 1, {}};
+  for (const vec2& c : u.crossings) crossings.values.insert(crossings.values.end(), {c.x, c.y});
+  for (const int k : u.crossing_first) first.values.push_back(float(k));
+  out.push_back(crossings);
+  out.push_back(first);
+  ShaderUniform mode{"u_beams.pair_mode", 1, {}}, line{"u_beams.pair_line", 4, {}};
+  for (const int m : u.pair_mode) mode.values.push_back(float(m));
+  for (const glm::vec4& l : u.pair_line)
+    line.values.insert(line.values.end(), {l.x, l.y, l.z, l.w});
+  out.push_back(mode);
+  out.push_back(line);
   return out;
 }
 

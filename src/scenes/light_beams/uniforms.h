@@ -17,15 +17,25 @@ constexpr int BEAM_COUNT = 4;
 constexpr int FIRST_BEAM = LIGHT_COUNT;
 constexpr int OCCLUDER = LIGHT_COUNT + BEAM_COUNT;
 constexpr int SHAPE_COUNT = OCCLUDER + 1;
+// Crossings of two shapes' outlines (crossings.h): two stadiums cross in at most 8 points.
+constexpr int MAX_PAIR_CROSSINGS = 8;
+constexpr int MAX_CROSSINGS = 64;
+// How two shapes i < j lie (crossings.h), which says which one a ray meets first.
+constexpr int PAIR_CROSSING = 0;       // outlines cross (or undecided): cut and test rays
+constexpr int PAIR_APART = 1;          // disjoint: the side of a separating line decides
+constexpr int PAIR_FIRST_INSIDE = 2;   // i inside j: j always first
+constexpr int PAIR_SECOND_INSIDE = 3;  // j inside i: i always first
 
 // How a pixel finds how much of a light it sees (README "Speed against error").
 enum Estimator {
   // The seed's shadow: one ray marched toward the light's closest point, lit or not.
   ESTIMATOR_SEED_RAY = 0,
   // Each occluder's covered share of the light's angular span, multiplied: exact for a single
-  // occluder (a circle or a capsule, of any size), wrong only where occluders overlap.
+  // occluder (a circle or a capsule, of any size, overlapping the light or not), too dark only
+  // where several occluders hide the same angles.
   ESTIMATOR_PENUMBRA = 1,
-  // The unblocked share of the span in closed form: the union of the occluders' spans.
+  // The unblocked share of the span in closed form: the union of the angles where an occluder
+  // comes before the light.
   ESTIMATOR_EXACT = 2,
 };
 
@@ -42,6 +52,14 @@ struct BeamsUniforms {
   float min_hit_dist = 1e-3f;
   float max_trace_dist = 120.0f;
   bool hit_mask = false;  // MarchSettings::hit_mask: 1 inside a light, 2 inside the occluder
+  // Where the outlines of shapes i < j cross: crossings[k] for k in [crossing_first[pairIndex(i,
+  // j)], crossing_first[pairIndex(i, j) + 1]) (crossings.h).
+  vec2 crossings[MAX_CROSSINGS] = {};
+  int crossing_first[SHAPE_COUNT * SHAPE_COUNT + 1] = {};
+  // For each pair i < j, at pairIndex(i, j): PAIR_*, and for PAIR_APART a line (x, y: a point,
+  // z, w: the unit normal toward j) that separates them.
+  int pair_mode[SHAPE_COUNT * SHAPE_COUNT] = {};
+  glm::vec4 pair_line[SHAPE_COUNT * SHAPE_COUNT] = {};
 };
 
 // Reads TIME, the parameters and the preset from ctx (ctx.params: this scene's parameters).

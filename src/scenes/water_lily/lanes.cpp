@@ -3,13 +3,14 @@
 #include "scenes/common/relaxed_march.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/render.h"
+#include "scenes/water_lily/secondary_lanes.h"
 
 namespace sdfreel::water_lily {
-namespace {
+namespace {}  // namespace
 
 // mapNearest(p, u, margin, leaves).d in lanes: a part whose bound exceeds the margin in every
 // lane contributes its bound without its exact distance being evaluated.
-F8 mapDistance8(const V3x8& p, const LilyUniforms& u, float margin, bool leaves) {
+F8 mapDistanceLanes(const V3x8& p, const LilyUniforms& u, float margin, bool leaves) {
   F8 d = splat(BIG_DISTANCE);
   for (int i = 0; i < (leaves ? LEAF_COUNT : 0); ++i) {
     const F8 b = u.naive ? splat(-1.0f) : leafBound(p, i, u);
@@ -26,14 +27,16 @@ F8 mapDistance8(const V3x8& p, const LilyUniforms& u, float margin, bool leaves)
   return d;
 }
 
+namespace {
+
 // march() of render.cpp for the lanes in `active` (primary rays: all pads and flowers, no path
 // before).
 F8 march_lanes(const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax, M8 active, F8 eps_per_t,
                const LilyUniforms& u, RayStats& stats) {
   const RelaxedMarchSettings s{u.max_steps, u.naive, u.step_factor, u.hit_eps, MIN_HIT_EPS, NO_HIT};
   return sdfreel::march_lanes(
-      [&u](const V3x8& p) { return mapDistance8(p, u, BOUND_MARGIN, true); }, ro, rd, tmin, tmax,
-      active, eps_per_t, splat(0.0f), s, stats);
+      [&u](const V3x8& p) { return mapDistanceLanes(p, u, BOUND_MARGIN, true); }, ro, rd, tmin,
+      tmax, active, eps_per_t, splat(0.0f), s, stats);
 }
 
 }  // namespace
@@ -52,8 +55,17 @@ void radiancePacket(const RayPacket& rays, const LilyUniforms& u, glm::vec3* out
   F8 t = splat(NO_HIT);
   if (any(active))
     t = march_lanes(V3x8(rays.origin), rays.dir, t0, t1, active, eps_per_t, u, stats);
-  for (int i = 0; i < rays.count; ++i)
-    out[i] = radianceAfterMarch(rays.ray(i), spans[i], t[i], u, stats);
+  PixelShade shade[LANES];
+  SecondaryRays secondary[LANES];
+  for (int i = 0; i < rays.count; ++i) {
+    shade[i] = shadeBegin(rays.ray(i), spans[i], t[i], u, stats);
+    secondary[i] = shade[i].rays;
+  }
+  traceSecondaryLanes(secondary, rays.count, u, stats);
+  for (int i = 0; i < rays.count; ++i) {
+    shade[i].rays = secondary[i];
+    out[i] = shadeEnd(shade[i], u, stats);
+  }
 }
 
 std::vector<DistanceFunction> lilyDistanceFunctions(const LilyUniforms& u) {
@@ -63,8 +75,8 @@ std::vector<DistanceFunction> lilyDistanceFunctions(const LilyUniforms& u) {
   };
   scene.lanes = [u](const float* x, const float* y, const float* z, float* d, int n) {
     for (int i = 0; i < n; i += LANES)
-      store8(d + i,
-             mapDistance8(V3x8(load8(x + i), load8(y + i), load8(z + i)), u, BOUND_MARGIN, true));
+      store8(d + i, mapDistanceLanes(V3x8(load8(x + i), load8(y + i), load8(z + i)), u,
+                                     BOUND_MARGIN, true));
   };
   DistanceFunction flower{"lilyFlower", nullptr, nullptr};
   flower.scalar = [u](const float* x, const float* y, const float* z, float* d, int n) {

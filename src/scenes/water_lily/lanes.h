@@ -1,8 +1,9 @@
 #pragma once
 // water_lily in eight lanes: the CPU backend's packet path. The primary rays of a packet are
 // marched together on V3x8 (the geometry templates of geometry.h, the scalar operations in the
-// scalar order); shading, shadows, water and reflections then run lane by lane with the scalar
-// code. Same bits, same RayStats.
+// scalar order); so are their soft shadows and the water's reflection marches
+// (secondary_lanes.h). Normals, materials and lighting run lane by lane with the scalar code
+// (render.h: shadeBegin, shadeEnd). Same bits, same RayStats.
 #include <glm/glm.hpp>
 #include <vector>
 

@@ -3,6 +3,7 @@
 #include "scenes/common/relaxed_march.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/look.h"
+#include "scenes/water_lily/shadow.h"
 #include "sdf/det_math.h"
 #include "sdf/noise.h"
 #include "sdf/sdf.h"
@@ -21,13 +22,7 @@ constexpr float HIT_ID_NONE = 0.0f;
 constexpr float HIT_ID_FLOWER = 1.0f;
 constexpr float HIT_ID_LEAF = 2.0f;
 
-constexpr float SHADOW_TMIN = 0.01f;
-constexpr float SHADOW_HIT_EPS = 1e-4f;
-constexpr float SHADOW_FIRST_PH = 1e10f;
-constexpr float SHADOW_MIN_DENOM = 1e-6f;
-constexpr float SHADOW_MIN_STEP = 1e-4f;  // a bound near 0 beside a petal must not stall the ray
-constexpr float FILL_SHADOW_SOFTNESS = 0.35f;  // the sky fill is a wide light: a softer penumbra
-constexpr float REFLECT_MAX_DIST = 14.0f;      // reflections of lilies farther away fade out anyway
+constexpr float REFLECT_MAX_DIST = 14.0f;  // reflections of lilies farther away fade out anyway
 // Reflections are seen through the bumped water, blurred: a coarser hit threshold lets a
 // reflected ray that creeps over a pad's rim stop (hard case horizon_grazing: out of steps).
 constexpr float REFLECT_HIT_SCALE = 4.0f;
@@ -129,12 +124,6 @@ vec3 leafAlbedo(int i, const vec3& q) {
 }
 
 // Colour of the marched surface at p: which part, its albedo, and whether light shines through.
-struct Surface {
-  vec3 albedo;
-  float translucent;  // 0 opaque .. 1 a thin petal
-  float shininess;    // 0: no highlight
-};
-
 Surface surfaceAt(const vec3& p, bool leaves, const LilyUniforms& u) {
   const Nearest n = mapNearest(p, u, BOUND_MARGIN, leaves);
   if (n.flower >= 0) {
@@ -185,22 +174,6 @@ vec3 lightSurface(const Surface& s, const vec3& n, const vec3& rd, float sun_sha
   return col;
 }
 
-// A marched surface seen along rd at distance t, fully lit (soft shadows from both lights).
-vec3 shadeSurface(const vec3& p, const vec3& n, const vec3& rd, float bias, const LilyUniforms& u,
-                  RayStats& stats) {
-  const Surface s = surfaceAt(p, true, u);
-  const vec3 o = p + n * bias;
-  // A surface turned away from a light gets no direct light from it: no shadow ray either
-  // (translucent petals need the sun's shadow from both sides).
-  const bool sun_side = glm::dot(n, u.sun_dir) > 0.0f || s.translucent > 0.0f;
-  const vec3 os = glm::dot(n, u.sun_dir) > 0.0f ? o : p - n * bias;
-  const float sun =
-      sun_side ? softShadow(os, u.sun_dir, u.shadow_k, u.shadow_steps, u, stats) : 1.0f;
-  const float fill =
-      softShadow(o, u.fill_dir, u.shadow_k * FILL_SHADOW_SOFTNESS, u.shadow_steps / 2, u, stats);
-  return lightSurface(s, n, rd, sun, fill, u);
-}
-
 // Height of the water at (x, z): 3D FBM of the position and the water's time coordinate,
 // cross-faded with its wrapped twin near the wrap (uniforms.cpp).
 float waterHeight(float x, float z, const LilyUniforms& u) {
@@ -234,49 +207,6 @@ float submergedLeaf(const vec3& w, const vec3& rd, vec3& col) {
     }
   }
   return cover;
-}
-
-// What the water mirrors along r from w: the lilies (lit, unshadowed), fading with the distance
-// they are seen at, over the sky. As in the seed, only the lilies are tested: the pads lie flat
-// on the water, where their reflection would coincide with them, and a reflected ray creeping
-// over a pad's rim would cost its whole step budget (hard case horizon_grazing).
-vec3 traceReflection(const vec3& w, const vec3& r, float t_before, float eps_per_t,
-                     float pixel_angle, const LilyUniforms& u, RayStats& stats) {
-  const vec3 sky = skyColor(r, u);
-  const vec2 span = slabSpan(w, r);
-  const float t1 = dm::min(span.y, u.naive ? u.max_dist : REFLECT_MAX_DIST);
-  if (!(span.x < t1)) return sky;
-  const float t = march(w, r, span.x, t1, u.reflect_steps, eps_per_t * REFLECT_HIT_SCALE, t_before,
-                        false, u, stats);
-  if (t == NO_HIT) return sky;
-  const vec3 q = w + r * t;
-  const vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), false, u, stats);
-  const vec3 col = lightSurface(surfaceAt(q, false, u), nq, r, 1.0f, 1.0f, u);
-  return dm::mix(sky, col, dm::exp(-REFLECT_FALLOFF * t));
-}
-
-vec3 shadeWater(const vec3& ro, const vec3& rd, float t, float eps_per_t, float pixel_angle,
-                const LilyUniforms& u, RayStats& stats) {
-  const vec3 w = ro + rd * t;
-  const vec3 n = waterNormal(w.x, w.z, t, u);
-  const float fresnel = schlick(-glm::dot(n, rd), WATER_F0);
-  vec3 r = reflectDir(rd, n);
-  r.y = dm::abs(r.y);  // a bump cannot turn the reflection into the water
-  const float bias = surfaceBias(hitEps(eps_per_t, t, u));
-  const vec3 wo = vec3(w.x, bias, w.z);
-  const vec3 mirror = traceReflection(wo, r, t, eps_per_t, pixel_angle, u, stats);
-  const float sun = softShadow(wo, u.sun_dir, u.shadow_k, u.shadow_steps, u, stats);
-  const float fill =
-      softShadow(wo, u.fill_dir, u.shadow_k * FILL_SHADOW_SOFTNESS, u.shadow_steps / 2, u, stats);
-  // The water body: a deep colour lit by sun and sky, over the submerged pads.
-  vec3 body = WATER_DEEP * (WATER_SUN_SHARE * sun + (1.0f - WATER_SUN_SHARE) * fill);
-  vec3 leaf_col(0.0f);
-  const float cover = submergedLeaf(w, rd, leaf_col);
-  const vec3 leaf_lit = leaf_col * (u.sun_color * (u.sun_dir.y * sun) + AMBIENT_SKY * fill);
-  body = dm::mix(body, leaf_lit * SUBMERGED_TRANSMIT, cover);
-  const float glint = dm::pow(dm::max(glm::dot(r, u.sun_dir), 0.0f), SUN_GLINT_POWER);
-  const vec3 mirror_lit = mirror + u.sun_color * (SUN_GLINT * glint * sun);
-  return dm::mix(body, mirror_lit, fresnel);
 }
 
 vec3 applyFog(const vec3& col, float t, const LilyUniforms& u) {
@@ -323,11 +253,17 @@ vec3 waterNormal(float x, float z, float dist, const LilyUniforms& u) {
   return safe_normalize(vec3(-gx * bump, 1.0f, -gz * bump));
 }
 
-float softShadow(const vec3& ro, const vec3& ld, float k, int steps, const LilyUniforms& u,
-                 RayStats& stats) {
+vec2 shadowSpan(const vec3& ro, const vec3& ld, const LilyUniforms& u) {
   const vec2 span = slabSpan(ro, ld);
   const float tmax = u.naive ? u.max_dist : span.y;
-  float t = dm::max(SHADOW_TMIN, u.naive ? 0.0f : span.x);
+  return vec2(dm::max(SHADOW_TMIN, u.naive ? 0.0f : span.x), tmax);
+}
+
+float softShadow(const vec3& ro, const vec3& ld, float k, int steps, const LilyUniforms& u,
+                 RayStats& stats) {
+  const vec2 span = shadowSpan(ro, ld, u);
+  const float tmax = span.y;
+  float t = span.x;
   float res = 1.0f;
   float ph = SHADOW_FIRST_PH;
   float step = 0.0f;
@@ -399,30 +335,114 @@ vec3 sceneRadiance(const Ray& ray, const LilyUniforms& u, RayStats& stats) {
 
 vec3 radianceAfterMarch(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
                         RayStats& stats) {
+  PixelShade ps = shadeBegin(ray, s, t, u, stats);
+  traceSecondary(ps.rays, u, stats);
+  return shadeEnd(ps, u, stats);
+}
+
+PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
+                      RayStats& stats) {
+  PixelShade ps;
   const vec3 ro = ray.origin, rd = ray.dir;
-  const float eps_per_t = s.eps_per_t;
-  const float t_water = s.t_water;
-  const bool water = s.water;
+  ps.rd = rd;
+  ps.pixel_angle = ray.pixel_angle;
+  SecondaryRays& sr = ps.rays;
   if (u.hit_mask) {
-    if (t == NO_HIT) return vec3(HIT_ID_NONE);
-    return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER : HIT_ID_LEAF);
+    ps.col = t == NO_HIT ? vec3(HIT_ID_NONE)
+                         : vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER
+                                                                                     : HIT_ID_LEAF);
+    return ps;
   }
-  vec3 col;
-  float dist;
   if (t != NO_HIT) {
-    const vec3 p = ro + rd * t;
-    const vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), true, u, stats);
-    col = shadeSurface(p, n, rd, surfaceBias(hitEps(eps_per_t, t, u)), u, stats);
-    dist = t;
-  } else if (water) {
-    col = shadeWater(ro, rd, t_water, eps_per_t, ray.pixel_angle, u, stats);
-    dist = t_water;
-  } else if (ro.y < 0.0f) {
-    return grade(underwater(rd), rd, u);
+    // A marched surface, fully lit: soft shadows from both lights. A surface turned away from a
+    // light gets no direct light from it: no shadow ray either (translucent petals need the
+    // sun's shadow from both sides).
+    ps.kind = SHADE_SURFACE;
+    ps.dist = t;
+    ps.p = ro + rd * t;
+    ps.n = calcNormal(ps.p, normalEps(ray.pixel_angle, t, u), true, u, stats);
+    ps.surface = surfaceAt(ps.p, true, u);
+    const float bias = surfaceBias(hitEps(s.eps_per_t, t, u));
+    const vec3 o = ps.p + ps.n * bias;
+    sr.sun = glm::dot(ps.n, u.sun_dir) > 0.0f || ps.surface.translucent > 0.0f;
+    sr.sun_origin = glm::dot(ps.n, u.sun_dir) > 0.0f ? o : ps.p - ps.n * bias;
+    sr.fill = true;
+    sr.fill_origin = o;
+  } else if (s.water) {
+    // The water: what it mirrors (the lilies, lit and unshadowed, fading with the distance they
+    // are seen at, over the sky; as in the seed only the lilies are tested: the pads lie flat on
+    // the water, and a reflected ray creeping over a pad's rim would cost its whole step budget,
+    // hard case horizon_grazing), and the shadows on it.
+    ps.kind = SHADE_WATER;
+    ps.dist = s.t_water;
+    ps.p = ro + rd * s.t_water;
+    ps.n = waterNormal(ps.p.x, ps.p.z, s.t_water, u);
+    vec3 r = reflectDir(rd, ps.n);
+    r.y = dm::abs(r.y);  // a bump cannot turn the reflection into the water
+    const float bias = surfaceBias(hitEps(s.eps_per_t, s.t_water, u));
+    const vec3 wo = vec3(ps.p.x, bias, ps.p.z);
+    const vec2 span = slabSpan(wo, r);
+    sr.reflect_origin = wo;
+    sr.reflect_dir = r;
+    sr.reflect_t0 = span.x;
+    sr.reflect_t1 = dm::min(span.y, u.naive ? u.max_dist : REFLECT_MAX_DIST);
+    sr.reflect = span.x < sr.reflect_t1;
+    sr.reflect_eps_per_t = s.eps_per_t * REFLECT_HIT_SCALE;
+    sr.reflect_t_before = s.t_water;
+    sr.sun = sr.fill = true;
+    sr.sun_origin = sr.fill_origin = wo;
   } else {
-    return grade(skyColor(rd, u), rd, u);
+    ps.col = grade(ro.y < 0.0f ? underwater(rd) : skyColor(rd, u), rd, u);
   }
-  return grade(applyFog(col, dist, u), rd, u);
+  return ps;
+}
+
+void traceSecondary(SecondaryRays& sr, const LilyUniforms& u, RayStats& stats) {
+  if (sr.reflect) {
+    const RelaxedMarchSettings s{u.reflect_steps, u.naive,     u.step_factor,
+                                 u.hit_eps,       MIN_HIT_EPS, NO_HIT};
+    sr.reflect_t = relaxed_march([&](const vec3& p) { return mapScene(p, false, u, stats); },
+                                 sr.reflect_origin, sr.reflect_dir, sr.reflect_t0, sr.reflect_t1,
+                                 sr.reflect_eps_per_t, sr.reflect_t_before, s, stats);
+  }
+  if (sr.sun)
+    sr.sun_shadow = softShadow(sr.sun_origin, u.sun_dir, u.shadow_k, u.shadow_steps, u, stats);
+  if (sr.fill)
+    sr.fill_shadow = softShadow(sr.fill_origin, u.fill_dir, u.shadow_k * FILL_SHADOW_SOFTNESS,
+                                u.shadow_steps / 2, u, stats);
+}
+
+vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u, RayStats& stats) {
+  if (ps.kind == SHADE_DONE) return ps.col;
+  const SecondaryRays& sr = ps.rays;
+  const vec3 rd = ps.rd;
+  vec3 col;
+  if (ps.kind == SHADE_SURFACE) {
+    col = lightSurface(ps.surface, ps.n, rd, sr.sun_shadow, sr.fill_shadow, u);
+  } else {
+    const vec3 w = ps.p, r = sr.reflect_dir;
+    const float fresnel = schlick(-glm::dot(ps.n, rd), WATER_F0);
+    vec3 mirror = skyColor(r, u);
+    if (sr.reflect && sr.reflect_t != NO_HIT) {
+      const float t = sr.reflect_t;
+      const vec3 q = sr.reflect_origin + r * t;
+      const vec3 nq =
+          calcNormal(q, normalEps(ps.pixel_angle, sr.reflect_t_before + t, u), false, u, stats);
+      const vec3 lit = lightSurface(surfaceAt(q, false, u), nq, r, 1.0f, 1.0f, u);
+      mirror = dm::mix(mirror, lit, dm::exp(-REFLECT_FALLOFF * t));
+    }
+    const float sun = sr.sun_shadow, fill = sr.fill_shadow;
+    // The water body: a deep colour lit by sun and sky, over the submerged pads.
+    vec3 body = WATER_DEEP * (WATER_SUN_SHARE * sun + (1.0f - WATER_SUN_SHARE) * fill);
+    vec3 leaf_col(0.0f);
+    const float cover = submergedLeaf(w, rd, leaf_col);
+    const vec3 leaf_lit = leaf_col * (u.sun_color * (u.sun_dir.y * sun) + AMBIENT_SKY * fill);
+    body = dm::mix(body, leaf_lit * SUBMERGED_TRANSMIT, cover);
+    const float glint = dm::pow(dm::max(glm::dot(r, u.sun_dir), 0.0f), SUN_GLINT_POWER);
+    const vec3 mirror_lit = mirror + u.sun_color * (SUN_GLINT * glint * sun);
+    col = dm::mix(body, mirror_lit, fresnel);
+  }
+  return grade(applyFog(col, ps.dist, u), rd, u);
 }
 
 }  // namespace sdfreel::water_lily

@@ -46,4 +46,38 @@ PrimarySpan primarySpan(const Ray& ray, const LilyUniforms& u);
 glm::vec3 radianceAfterMarch(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
                              RayStats& stats);
 
+// radianceAfterMarch in three steps, so that the lanes trace the rays of eight pixels' shading
+// together: shadeBegin (normal, material, and which secondary rays the pixel needs),
+// traceSecondary (one pixel's soft shadows and reflection march; the lanes have their twin), and
+// shadeEnd (the lighting with their answers).
+struct SecondaryRays {
+  bool sun = false, fill = false, reflect = false;  // which rays the pixel traces
+  glm::vec3 sun_origin{0.0f}, fill_origin{0.0f};    // soft shadows towards u.sun_dir, u.fill_dir
+  glm::vec3 reflect_origin{0.0f}, reflect_dir{0.0f};
+  float reflect_t0 = 0.0f, reflect_t1 = 0.0f;  // marched span of the reflection (flowers only)
+  float reflect_eps_per_t = 0.0f, reflect_t_before = 0.0f;
+  float sun_shadow = 1.0f, fill_shadow = 1.0f, reflect_t = NO_HIT;  // the answers
+};
+struct Surface {
+  glm::vec3 albedo{0.0f};
+  float translucent = 0.0f;  // 0 opaque .. 1 a thin petal
+  float shininess = 0.0f;    // 0: no highlight
+};
+constexpr int SHADE_DONE = 0;  // sky, underwater or hit mask: col is the answer
+constexpr int SHADE_SURFACE = 1;
+constexpr int SHADE_WATER = 2;
+struct PixelShade {
+  int kind = SHADE_DONE;
+  glm::vec3 col{0.0f};
+  glm::vec3 rd{0.0f};
+  float dist = 0.0f, pixel_angle = 0.0f;
+  glm::vec3 p{0.0f}, n{0.0f};  // the surface's or the water's point and normal
+  Surface surface;
+  SecondaryRays rays;
+};
+PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
+                      RayStats& stats);
+void traceSecondary(SecondaryRays& rays, const LilyUniforms& u, RayStats& stats);
+glm::vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u, RayStats& stats);
+
 }  // namespace sdfreel::water_lily

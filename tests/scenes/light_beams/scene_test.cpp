@@ -6,6 +6,7 @@
 
 #include "render/camera.h"
 #include "render/frame_context.h"
+#include "scenes/light_beams/crossings.h"
 #include "scenes/light_beams/render.h"
 #include "scenes/light_beams/visibility.h"
 #include "scenes/registry.h"
@@ -79,10 +80,11 @@ TEST(LightBeamsScene, LightsAreWhiteInsideAndOnTheEdgeAndColouredInTheGlow) {
   // On the edge (d = 0 exactly: a circle of radius 0.5 at the origin) still white.
   u.shapes[amber] = Shape{SHAPE_CIRCLE, {0.0f, 0.0f}, {}, 0.5f};
   u.shapes[OCCLUDER].a = u.shapes[OCCLUDER].b = vec2(50.0f, 50.0f);
+  findCrossings(u);  // the shapes moved: how they lie and cross, again
   EXPECT_EQ(lightEmission({0.5f, 0.0f}, amber, 0.01f, u, stats), vec3(gain));
   // Past the blend: the light's colour times the glow and the visible share.
   const vec2 p(0.0f, -0.7f);
-  const float vis = exactVisibility(p, amber, u, stats);
+  const float vis = lightVisibility(p, amber, 0.2f, u, stats);  // the preset's estimator
   const vec3 e = lightEmission(p, amber, 0.01f, u, stats);
   const vec3 want = u.color[amber] * attenuation(0.2f, u) * (gain * vis);
   EXPECT_NEAR(e.x, want.x, 1e-5f);
@@ -131,6 +133,15 @@ TEST(LightBeamsScene, BeamsSwayWithTime) {
     const Shape& sa = a.shapes[FIRST_BEAM + k];
     EXPECT_EQ(sa.a.x, sa.b.x);  // vertical
     EXPECT_NE(sa.a.x, b.shapes[FIRST_BEAM + k].a.x) << k;
+  }
+}
+
+// The packet-path (TIME 0, 3.7) and agreement (TIME 3) tests render the default scene: beams cross
+// lights there, so both check the cut shared angles (crossings.h) too.
+TEST(LightBeamsScene, BeamsCrossLightsInTheTestedFrames) {
+  for (double time : {0.0, 3.0, 3.7}) {
+    const BeamsUniforms u = make_beams_uniforms(context(time));
+    EXPECT_GT(u.crossing_first[SHAPE_COUNT * SHAPE_COUNT], 0) << "TIME " << time;
   }
 }
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include "scenes/light_beams/crossings.h"
+
 namespace sdfreel::light_beams {
 namespace {
 
@@ -79,7 +81,11 @@ TEST(LightBeamsVisibility, ClosedFormAgreesWithStratifiedMonteCarlo) {
   std::uniform_real_distribution<float> pos(-2.5f, 2.5f);
   int partial = 0;
   for (int scene = 0; scene < 20; ++scene) {
-    const BeamsUniforms u = random_scene(rng);
+    BeamsUniforms u = random_scene(rng);
+    BeamsUniforms by_rays = u;  // every pair "crossing" without cuts: one order ray per span
+    findCrossings(u);           // disjoint: the side of a separating line says which is first
+    for (int i = 0; i < SHAPE_COUNT; ++i)
+      for (int j = i + 1; j < SHAPE_COUNT; ++j) ASSERT_EQ(u.pair_mode[pairIndex(i, j)], PAIR_APART);
     for (int k = 0; k < 25; ++k) {
       const vec2 p(pos(rng), pos(rng));
       if (!outside_all(p, u)) continue;
@@ -91,6 +97,7 @@ TEST(LightBeamsVisibility, ClosedFormAgreesWithStratifiedMonteCarlo) {
         // there are at most two per other shape.
         const double tol = 2.0 * (SHAPE_COUNT - 1) * 0.5 / MC_RAYS + 1e-4;
         EXPECT_NEAR(exact, mc, tol) << "scene " << scene << " point " << k << " light " << light;
+        EXPECT_NEAR(exactVisibility(p, light, by_rays, stats), mc, tol) << "scene " << scene;
         if (exact > 0.01f && exact < 0.99f) ++partial;
       }
     }
@@ -102,6 +109,7 @@ TEST(LightBeamsVisibility, OneCircleOccluderHasTheClosedFormShareAndThePenumbraI
   BeamsUniforms u = empty_scene();
   u.shapes[0] = Shape{SHAPE_CIRCLE, {4.0f, 0.0f}, {}, 1.0f};  // light: half-angle asin(1/4)
   u.shapes[1] = Shape{SHAPE_CIRCLE, {2.0f, 0.6f}, {}, 0.3f};  // occluder above the axis
+  findCrossings(u);
   const vec2 p(0.0f, 0.0f);
   const double alpha = std::asin(0.25);
   const double o = std::atan2(0.6, 2.0), g = std::asin(0.3 / std::hypot(2.0, 0.6));
@@ -120,6 +128,7 @@ TEST(LightBeamsVisibility, PenumbraOvercountsOverlappingOccludersTheExactShareDo
   u.shapes[0] = Shape{SHAPE_CIRCLE, {4.0f, 0.0f}, {}, 1.0f};
   u.shapes[1] = Shape{SHAPE_CIRCLE, {2.0f, 0.3f}, {}, 0.2f};   // the same angles, one behind the
   u.shapes[2] = Shape{SHAPE_CIRCLE, {1.0f, 0.15f}, {}, 0.1f};  // other: hidden once, not twice
+  findCrossings(u);
   RayStats stats;
   const vec2 p(0.0f, 0.0f);
   const float exact = exactVisibility(p, 0, u, stats);
@@ -132,6 +141,7 @@ TEST(LightBeamsVisibility, ShapesBehindTheLightHideNothing) {
   BeamsUniforms u = empty_scene();
   u.shapes[0] = Shape{SHAPE_CIRCLE, {2.0f, 0.0f}, {}, 0.5f};
   u.shapes[1] = Shape{SHAPE_SEGMENT, {4.0f, -2.0f}, {4.0f, 2.0f}, 0.1f};  // a wall behind it
+  findCrossings(u);
   RayStats stats;
   EXPECT_EQ(exactVisibility({0.0f, 0.0f}, 0, u, stats), 1.0f);
   EXPECT_EQ(penumbraVisibility({0.0f, 0.0f}, 0, u, stats), 1.0f);
@@ -145,6 +155,7 @@ TEST(LightBeamsVisibility, InsideAnotherShapeNothingIsSeen) {
   BeamsUniforms u = empty_scene();
   u.shapes[0] = Shape{SHAPE_CIRCLE, {2.0f, 0.0f}, {}, 0.5f};
   u.shapes[1] = Shape{SHAPE_CIRCLE, {0.0f, 0.0f}, {}, 0.5f};
+  findCrossings(u);
   RayStats stats;
   EXPECT_EQ(exactVisibility({0.1f, 0.0f}, 0, u, stats), 0.0f);
   EXPECT_EQ(penumbraVisibility({0.1f, 0.0f}, 0, u, stats), 0.0f);
@@ -155,6 +166,7 @@ TEST(LightBeamsVisibility, TheSeedsRayIsLitOrNotWhereTheExactShareIsPartial) {
   BeamsUniforms u = empty_scene();
   u.shapes[0] = Shape{SHAPE_CIRCLE, {4.0f, 0.0f}, {}, 1.0f};
   u.shapes[1] = Shape{SHAPE_CIRCLE, {2.0f, 0.45f}, {}, 0.3f};  // grazes the central ray
+  findCrossings(u);
   RayStats stats;
   const float exact = exactVisibility({0.0f, 0.0f}, 0, u, stats);
   const float seed = seedShadow({0.0f, 0.0f}, 0, 3.0f, u, stats);

@@ -1,0 +1,25 @@
+// lenticular_card's first pass, the backdrop: the twin of src/scenes/lenticular_card/
+// backdrop.cpp. The card itself is the second pass (card_pass.glsl).
+#include "common/sample_loop.glsl"
+
+uniform vec3 u_backdrop_light;
+uniform int u_backdrop_hit_mask;  // MarchSettings::hit_mask: nothing marched here, id 0
+
+const vec3 FLOOR = vec3(0.30, 0.27, 0.24), WALL_LOW = vec3(0.06, 0.06, 0.07);
+const vec3 WALL_HIGH = vec3(0.015, 0.018, 0.025);
+const float FLOOR_FADE = 4.0;
+const float SHADOW_RADIUS = 0.35;
+const float SHADOW_DEPTH = 0.55;
+
+vec3 radiance(Ray ray, inout RayStats stats) {
+  if (u_backdrop_hit_mask != 0) return vec3(0.0);
+  precise vec3 wall = dm_mix(WALL_LOW, WALL_HIGH, dm_smoothstep(-0.1, 0.6, ray.dir.y));
+  if (!(ray.dir.y < 0.0) || !(ray.origin.y > 0.0)) return wall;
+  precise float t = -ray.origin.y / ray.dir.y;
+  precise float x = ray.origin.x + ray.dir.x * t, z = ray.origin.z + ray.dir.z * t;
+  precise float r = sqrt(x * x + z * z);
+  precise float shadow = 1.0 - SHADOW_DEPTH * (1.0 - dm_smoothstep(0.0, SHADOW_RADIUS, r));
+  precise vec3 lit = FLOOR * ((0.3 + 0.9 * dm_max(u_backdrop_light.y, 0.0)) * shadow);
+  precise vec3 c = dm_mix(lit, wall, dm_smoothstep(0.0, FLOOR_FADE, r));
+  return c;
+}

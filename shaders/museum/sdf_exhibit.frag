@@ -1,0 +1,82 @@
+// Exhibit 1: the sdf_morph object ray-marched in object space inside its bounding box, drawn with
+// front faces culled; the twin of shade_exhibit() in src/scenes/museum/sdf_exhibit.cpp (see there).
+// Writes the hit's window depth to gl_FragDepth, so the depth test composites it with the hall.
+#include "common/camera.glsl"
+#include "sdf_morph/geometry.glsl"
+#include "sdf_morph/shading.glsl"
+#include "museum/lighting.glsl"
+#include "museum/probe.glsl"
+
+const float MIN_EPS = 1e-4;
+const float NORMAL_EPS = 1e-3;
+
+uniform MorphUniforms u_morph;
+uniform mat4 u_exhibit_inv_model;
+uniform float u_exhibit_scale;
+uniform vec3 u_exhibit_to_world0;
+uniform vec3 u_exhibit_to_world1;
+uniform vec3 u_exhibit_to_world2;
+
+in vec3 v_world_position;
+in vec3 v_world_normal;
+in vec2 v_uv;
+flat in vec4 v_instance_data;
+
+layout(location = 0) out vec4 frag_color;
+
+vec2 box_span(vec3 o, vec3 d) {
+  precise vec3 c = objectBoundCenter();
+  precise float t0 = -1e30, t1 = 1e30;
+  for (int k = 0; k < 3; ++k) {
+    precise float inv = 1.0 / d[k];
+    precise float a = (c[k] - OBJECT_BOUND_RADIUS - o[k]) * inv;
+    precise float b = (c[k] + OBJECT_BOUND_RADIUS - o[k]) * inv;
+    t0 = dm_max(t0, dm_min(a, b));
+    t1 = dm_min(t1, dm_max(a, b));
+  }
+  return vec2(t0, t1);
+}
+
+vec3 object_normal(vec3 p) {
+  const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0),
+             d = vec3(1.0);
+  precise float e = NORMAL_EPS;
+  precise vec3 g = a * mapObject(p + a * e, u_morph) + b * mapObject(p + b * e, u_morph) +
+                   c * mapObject(p + c * e, u_morph) + d * mapObject(p + d * e, u_morph);
+  return g / sqrt(dm_dot(g, g));
+}
+
+vec3 to_world(vec3 v) {
+  return u_exhibit_to_world0 * v.x + u_exhibit_to_world1 * v.y + u_exhibit_to_world2 * v.z;
+}
+
+void main() {
+  precise vec3 to_point = v_world_position - u_camera_origin;
+  precise vec3 dir = to_point / sqrt(dm_dot(to_point, to_point));
+  precise vec3 o = (u_exhibit_inv_model * vec4(u_camera_origin, 1.0)).xyz;
+  precise vec3 dl = (u_exhibit_inv_model * vec4(dir, 0.0)).xyz * u_exhibit_scale;
+  precise vec2 span = box_span(o, dl);
+  precise float t = dm_max(span.x, 0.0);
+  bool hit = false;
+  for (int i = 0; i < u_morph.max_steps && t < span.y; ++i) {
+    precise float d = mapObject(o + dl * t, u_morph);
+    precise float eps = u_morph.naive != 0 ? u_morph.hit_eps
+                                           : dm_max(MIN_EPS, u_morph.hit_eps * u_pixel_angle * t);
+    if (d < eps) {
+      hit = true;
+      break;
+    }
+    t = t + d;
+  }
+  if (!hit) discard;
+  precise vec3 p = o + dl * t;
+  precise vec3 n = object_normal(p);
+  precise vec3 world_hit = u_camera_origin + dir * (t * u_exhibit_scale);
+  precise vec3 world_n = to_world(n);
+  precise vec3 r = to_world(dl - 2.0 * dm_dot(n, dl) * n);
+  precise float shadow = sun_visibility(world_hit + world_n * 0.002);
+  frag_color = vec4(shadeObjectLit(n, dl, sample_probe(r), shadow, 1.0, u_morph), 1.0);
+  if (u_morph.hit_mask != 0) frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
+  precise float view_depth = dm_dot(world_hit - u_camera_origin, u_camera_forward);
+  gl_FragDepth = window_depth(view_depth);
+}

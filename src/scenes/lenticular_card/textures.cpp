@@ -1,0 +1,98 @@
+#include "scenes/lenticular_card/textures.h"
+
+#include <mutex>
+#include <stdexcept>
+
+#include "io/cache_file.h"
+#include "scenes/common/periodic_fbm.h"
+#include "sdf/det_math.h"
+
+namespace sdfreel::lenticular_card {
+namespace {
+
+constexpr float PRINT_REFLECTANCE = 0.9f;
+constexpr uint32_t RIDGE_SEED = 0x1e17c0deu;
+constexpr int RIDGE_CELLS = 8, RIDGE_OCTAVES = 4;
+constexpr float RIDGE_SLOPE_SCALE = 6.0f;
+
+float srgb_to_linear(uint8_t byte) {
+  const float c = float(byte) / 255.0f;
+  return c <= 0.04045f ? c / 12.92f : dm::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+ShaderTexture as_shader(const std::string& name, const Texture& t) {
+  return ShaderTexture{name, t.width, t.height, t.channels, t.texels};
+}
+
+}  // namespace
+
+InterlaceLayout card_layout(int views) {
+  return InterlaceLayout{views, double(views), false};
+}
+
+CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<Rgb8Image>& b) {
+  if (a.empty() || a.size() != b.size())
+    throw std::invalid_argument("lenticular_card: the two prints need the same number of views");
+  const InterlaceLayout layout = card_layout(int(a.size()));
+  const Rgb8Image pa = interlace(a, layout), pb = interlace(b, layout);
+  if (pa.width != pb.width || pa.height != pb.height)
+    throw std::invalid_argument("lenticular_card: the two prints differ in size");
+  float decode[256];
+  for (int i = 0; i < 256; ++i) decode[i] = srgb_to_linear(uint8_t(i)) * PRINT_REFLECTANCE;
+  auto print = std::make_shared<Texture>(pa.width, pa.height * 2, 4);
+  std::string bytes;
+  for (int y = 0; y < print->height; ++y)
+    for (int x = 0; x < print->width; ++x) {
+      const Rgb8Image& src = y < pa.height ? pa : pb;
+      const uint8_t* p = src.at(x, y % pa.height);
+      float* t = print->at(x, y);
+      t[0] = decode[p[0]], t[1] = decode[p[1]], t[2] = decode[p[2]], t[3] = 1.0f;
+      bytes.append(reinterpret_cast<const char*>(p), 3);
+    }
+  CardPrints out;
+  out.lenses = a[0].width;
+  out.views = int(a.size());
+  out.view_height = a[0].height;
+  out.print = print;
+  out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED));
+  out.key = checksum64(bytes.data(), bytes.size()) | 1ull;  // never 0 ("unknown")
+  return out;
+}
+
+const CardPrints& default_card_prints() {
+  static std::once_flag once;
+  static CardPrints prints;
+  std::call_once(once, [] {
+    ViewSet lanterns{"lantern_festival", 16, 64, 48, 2, 4.0, 24.0, 1.0};
+    ViewSet morph{"sdf_morph", 16, 64, 48, 2, 1.5, 24.0, 1.6};
+    prints = make_card_prints(source_views(lanterns), source_views(morph));
+  });
+  return prints;
+}
+
+Texture make_ridge_map(int n, uint32_t seed) {
+  Texture t(n, n, 4);
+  const float step = 1.0f / float(n);
+  auto height = [&](int x, int y) {
+    return periodic_fbm2(float(x) * step, float(y) * step, RIDGE_CELLS * 4, RIDGE_CELLS,
+                         RIDGE_OCTAVES, seed);
+  };
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      // Central differences on the torus: the map tiles.
+      const float dx = height((x + 1) % n, y) - height((x + n - 1) % n, y);
+      const float dy = height(x, (y + 1) % n) - height(x, (y + n - 1) % n);
+      float* p = t.at(x, y);
+      p[0] = dm::clamp(-dx * RIDGE_SLOPE_SCALE, -1.0f, 1.0f);
+      p[1] = dm::clamp(-dy * RIDGE_SLOPE_SCALE, -1.0f, 1.0f);
+      p[2] = 0.0f;
+      p[3] = 1.0f;
+    }
+  return t;
+}
+
+std::vector<ShaderTexture> card_shader_textures(const CardPrints& prints) {
+  return {as_shader("u_card_print", *prints.print), as_shader("u_card_ridges", *prints.ridges)};
+}
+
+}  // namespace sdfreel::lenticular_card

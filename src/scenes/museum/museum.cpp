@@ -1,0 +1,161 @@
+// Scene "museum" (seed 004): a gallery hall drawn the conventional way (meshes, a depth buffer,
+// a sun through the window) with the seed's exhibits in it. The frame is a plan of passes
+// (render/frame_plan.h):
+//   1. sky: a ray pass into the "hall" target (what the window shows);
+//   2. hall: one instanced cube mesh for every box of the hall (museum/hall_layout.h), lit by the
+//      sun with analytic window and occluder shadows, ambient and Blinn-Phong specular;
+//   3. exhibits on their plinths (museum/exhibits.h): exhibit 1, the sdf_morph object ray-marched
+//      inside its bounding mesh, composited by depth, reflecting a probe of the hall taken from its
+//      centre in prepare() (museum/probe.h); plinths 2 and 3 ready for issue 13;
+//   4. exhibit 4, the air: occlusion from depth -> crepuscular rays -> composite with fog
+//      (museum/atmosphere.h).
+//
+// Parameters (besides sdf_morph's, which style exhibit 1: morph_period, rotation_speed, color,
+// reflectivity, environment_intensity; its key light is the museum's sun):
+//   fog_density      sigma of the distance fog, per metre
+//   rays_strength    scale of the crepuscular rays added to the frame
+//   exhibit_lift     exhibit 1 raised above its plinth top, metres
+//   exhibit_shift_x  exhibit 1 moved along x (along the hall), metres
+//   exhibit_shift_z  exhibit 1 moved along z (across the hall), metres
+//   exhibit_yaw      exhibit 1 turned about the vertical, radians
+//   exhibit_scale    exhibit 1's size (1 = sdf_morph's object, about 1 m tall)
+#include <memory>
+#include <vector>
+
+#include "render/camera_model.h"
+#include "scenes/common/param.h"
+#include "scenes/museum/atmosphere.h"
+#include "scenes/museum/exhibits.h"
+#include "scenes/museum/meshes.h"
+#include "scenes/scene.h"
+
+namespace sdfreel {
+
+SceneInfo sdf_morph_scene_info();
+
+namespace museum {
+namespace {
+
+constexpr const char* HALL_TARGET = "hall";
+// MarchSettings::hit_mask (the bench's per-surface errors): the frame holds these ids instead.
+constexpr float HIT_ID_SKY = 0.0f, HIT_ID_HALL = 2.0f;  // exhibit 1 is sdf_morph's HIT_ID_OBJECT
+
+std::vector<ParamSpec> params() {
+  std::vector<ParamSpec> p = {
+      scalar_param("fog_density", 0.02, 0.0, 0.5, "sigma of the distance fog, per metre"),
+      scalar_param("rays_strength", 0.35, 0.0, 5.0, "scale of the crepuscular rays"),
+      scalar_param("exhibit_lift", 0.0, -0.5, 3.0, "exhibit 1 raised above its plinth, metres"),
+      scalar_param("exhibit_shift_x", 0.0, -4.0, 4.0, "exhibit 1 moved along the hall, metres"),
+      scalar_param("exhibit_shift_z", 0.0, -4.0, 4.0, "exhibit 1 moved across the hall, metres"),
+      scalar_param("exhibit_yaw", 0.0, -6.3, 6.3, "exhibit 1 turned about the vertical, radians"),
+      scalar_param("exhibit_scale", 0.65, 0.05, 3.0, "exhibit 1's size (1 = sdf_morph's object)"),
+  };
+  for (const ParamSpec& s : sdf_morph_scene_info().params) p.push_back(s);
+  return p;
+}
+
+RayPass sky_pass(bool ids) {
+  RayPass p;
+  p.name = "sky";
+  p.colour = HALL_TARGET;
+  p.sdf_evals = "";
+  p.shader = "museum/museum.glsl";
+  p.uniforms = {{"u_hit_mask", 1, {ids ? 1.0f : 0.0f}}};
+  p.scalar = [ids](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
+    colour = ids ? glm::vec3(HIT_ID_SKY) : sky(ray.dir);
+    keep = true;
+  };
+  p.packet = [ids](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+    for (int i = 0; i < rays.count; ++i) {
+      out.colour[i] = ids ? glm::vec3(HIT_ID_SKY) : sky(rays.dir.lane(i));
+      out.keep[i] = true;
+    }
+  };
+  return p;
+}
+
+MeshPass hall_pass(const HallLight& light, bool ids) {
+  MeshPass p;
+  p.name = "hall";
+  p.mesh = unit_cube();
+  p.instances.clear();
+  for (const HallBox& b : hall_boxes())
+    p.instances.push_back(box_instance(b.lo, b.hi, glm::vec4(b.albedo, b.material)));
+  p.colour = HALL_TARGET;
+  p.fragment = "museum/hall.frag";
+  p.uniforms = light_uniforms(light);
+  p.uniforms.push_back({"u_hit_mask", 1, {ids ? 1.0f : 0.0f}});
+  p.shade = [light, ids](const MeshFragment& f) {
+    if (ids) return glm::vec4(glm::vec3(HIT_ID_HALL), 1.0f);
+    return glm::vec4(hall_radiance(f.world_position, f.world_normal, glm::vec3(f.instance_data),
+                                   f.instance_data.w, light),
+                     1.0f);
+  };
+  return p;
+}
+
+class MuseumScene : public Scene {
+ public:
+  void prepare(const FrameContext& ctx) override {
+    const glm::vec3 centre = exhibit_one_centre(ctx);
+    probe_ = std::make_shared<const ReflectionProbe>(
+        render_probe(centre, hall_boxes(), HallLight{centre, sun_occluders()}));
+  }
+  std::vector<ShaderTexture> shader_textures() const override { return {probe_texture(*probe_)}; }
+  glm::vec3 radiance(const Ray& ray, RayStats&) const override { return sky(ray.dir); }
+  FramePlan frame_plan(const FrameContext& ctx) const override {
+    FramePlan plan;
+    plan.near_plane = 0.05f;
+    plan.far_plane = 60.0f;
+    plan.targets.push_back({HALL_TARGET, TargetKind::Colour, glm::vec4(0.0f)});
+    const CameraModel cam =
+        make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
+    HallLight light{ctx.camera.origin, sun_occluders()};
+    const bool ids = ctx.march.hit_mask;
+    plan.passes.push_back(sky_pass(ids));
+    plan.passes.push_back(hall_pass(light, ids));
+    const ExhibitStage stage{ctx, cam, light, HALL_TARGET, DEPTH_TARGET, probe_.get()};
+    add_exhibit_passes(plan, stage, nullptr);
+    if (ids) {
+      plan.passes.push_back(copy_pass(HALL_TARGET, COLOUR_TARGET));
+      return plan;
+    }
+    Atmosphere air;
+    air.fog_density = float(ctx.params.scalar("fog_density"));
+    air.rays_strength = float(ctx.params.scalar("rays_strength"));
+    add_atmosphere_passes(plan, air, ctx, cam, HALL_TARGET);
+    return plan;
+  }
+
+ private:
+  std::shared_ptr<const ReflectionProbe> probe_;
+};
+
+// Hard places: inside exhibit 1's bound, and the floor at a grazing angle.
+std::vector<CameraPose> test_poses() {
+  return {CameraPose{{-2.95, 1.55, -1.45}, {-3.0, 1.3, -1.75}, 60.0, 0.0},
+          CameraPose{{5.5, 0.12, 3.0}, {-5.0, 0.0, -2.0}, 40.0, 0.0}};
+}
+
+}  // namespace
+}  // namespace museum
+
+SceneInfo museum_scene_info() {
+  SceneInfo info;
+  info.name = "museum";
+  info.description =
+      "A small gallery hall (seed 004) drawn as meshes with a depth buffer: floor, walls, "
+      "ceiling, a tall window the low sun shines through, a door, a bench, four plinths, "
+      "pictures and labels. Exhibit 1 is the sdf_morph object, ray-marched inside its bounding "
+      "box and composited with the hall by depth; exhibit 4 is the light itself: crepuscular "
+      "rays (GPU Gems 3, ch. 13) from the window's sky and a distance fog. Plinths 2 and 3 wait "
+      "for the lenticular card and the fur.";
+  info.params = museum::params();
+  info.default_camera = CameraPose{{3.5, 1.5, -2.2}, {-4.0, 1.9, 0.0}, 55.0, 0.0};
+  info.test_poses = museum::test_poses();
+  info.shader = "museum/museum.glsl";
+  info.make = [] { return std::unique_ptr<Scene>(new museum::MuseumScene()); };
+  return info;
+}
+
+}  // namespace sdfreel
