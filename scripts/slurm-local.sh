@@ -74,6 +74,11 @@ SlurmdTimeout=60
 NodeName=localhost NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
 PartitionName=local Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 EOF
+  # slurmd 22.05 always loads a cgroup plugin, even when no other plugin uses it, and its default
+  # ("autodetect") fails where /sys/fs/cgroup has nothing mounted (a chroot, some containers).
+  # Naming cgroup/v1 skips the detection; loading it touches no cgroup file system, and with the
+  # plugins above nothing asks it to. ("disabled", the clean way, exists only in later releases.)
+  echo "CgroupPlugin=cgroup/v1" >"$dir/cgroup.conf"
 }
 
 start() {
@@ -96,12 +101,13 @@ start() {
   dd if=/dev/urandom of="$dir/munge.key" bs=1024 count=1 status=none
   chmod 600 "$dir/munge.key"
   /usr/sbin/munged --force --key-file="$dir/munge.key" --socket="$dir/munge.socket" \
-    --pid-file="$dir/munged.pid" --seed-file="$dir/munged.seed" --log-file="$dir/munged.log"
+    --pid-file="$dir/munged.pid" --seed-file="$dir/munged.seed" \
+    --log-file="$dir/munged.log" || start_failed "$dir" "munged did not start"
 
   export SLURM_CONF=$dir/slurm.conf
   # Both daemons fork into the background; -i / -c: start clean, ignore saved state.
-  /usr/sbin/slurmctld -i -c
-  /usr/sbin/slurmd -N localhost
+  /usr/sbin/slurmctld -i -c || start_failed "$dir" "slurmctld did not start"
+  /usr/sbin/slurmd -N localhost || start_failed "$dir" "slurmd did not start"
 
   # Ready when the node is idle (up to 60 s; slurmd registers within seconds).
   local i state=""
@@ -110,9 +116,17 @@ start() {
     [ "$state" = idle ] && { echo "slurm-local: up in $dir (ports $port, $((port + 1)))" >&2; return; }
     sleep 0.5
   done
-  tail -n 20 "$dir/slurmctld.log" "$dir/slurmd.log" >&2 || true
+  start_failed "$dir" "the node did not become idle (state '$state')"
+}
+
+# Shows the daemons' last log lines, stops whatever did start, and fails saying why.
+start_failed() {
+  local dir=$1 log
+  for log in munged slurmctld slurmd; do
+    [ ! -s "$dir/$log.log" ] || tail -n 20 "$dir/$log.log" >&2
+  done
   stop "$dir"
-  die "the node did not become idle (state '$state')"
+  die "$2"
 }
 
 stop_pid_file() {

@@ -14,7 +14,14 @@ vec3 radiance(Ray ray, inout RayStats stats);
 layout(location = 0) precise out vec4 frag_color;
 layout(location = 1) out vec4 frag_sdf_evals;
 
+// Adaptive sampling: pixels that stopped (u_live_mask 0) trace nothing when the runner allows it
+// (u_discard_stopped 1: a plan whose only pass is this one, so no other pass reads the pixel).
+uniform sampler2D u_live_mask;
+uniform float u_discard_stopped;
+
 void main() {
+  if (u_discard_stopped != 0.0 && texelFetch(u_live_mask, ivec2(gl_FragCoord.xy), 0).x == 0.0)
+    discard;
   // GL's window origin is bottom-left; ImageRGBA's row 0 is the top row.
   int x = int(gl_FragCoord.x);
   int y = u_resolution.y - 1 - int(gl_FragCoord.y);

@@ -11,6 +11,7 @@ struct BenchRow {
   bool named_preset = false;           // naive/draft/final (labelled in the plot)
   MarchSettings march{};
   int samples = 1;
+  double mean_samples = 1.0;  // samples a pixel took on average (adaptive sampling varies them)
   double seconds_per_frame = 0.0;  // median over repetitions
   double psnr_db = 0.0, rmse = 0.0, mean_abs_error = 0.0, p99_abs_error = 0.0;
   double hitmiss_fraction = 0.0;

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "io/atomic_file.h"
 
 namespace sdfreel::bench {
 
@@ -32,6 +34,7 @@ std::vector<std::string> csv_columns() {
           "capped_per_pixel",
           "on_front",
           "samples",
+          "mean_samples",
           "max_steps",
           "hit_eps",
           "step_factor",
@@ -57,6 +60,7 @@ void write_csv(std::ostream& out, const std::vector<BenchRow>& rows) {
                                             num(r.capped_per_pixel),
                                             r.on_front ? "1" : "0",
                                             std::to_string(r.samples),
+                                            num(r.mean_samples),
                                             std::to_string(r.march.max_steps),
                                             num(r.march.hit_eps),
                                             num(r.march.step_factor),
@@ -68,15 +72,9 @@ void write_csv(std::ostream& out, const std::vector<BenchRow>& rows) {
 }
 
 void write_file_via_temp(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-    write(f);
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  std::ostringstream text;
+  write(text);
+  write_file_atomic(path, text.str());
 }
 
 void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows) {

@@ -11,9 +11,10 @@ namespace sdfreel::bench {
 
 std::vector<std::string> csv_columns();
 void write_csv(std::ostream& out, const std::vector<BenchRow>& rows);
-// Writes DIR/bench.csv atomically enough for a report: to a temporary name, then renamed.
+// Writes DIR/bench.csv atomically: every write checked, to a temporary name unique to this writer,
+// then renamed (io/atomic_file.h). Throws std::runtime_error naming `path`.
 void write_csv_file(const std::string& path, const std::vector<BenchRow>& rows);
-// What write_csv_file does for any report: `write` fills path + ".tmp", which is then renamed.
+// What write_csv_file does for any report: `write` fills a buffer, published by write_file_atomic.
 void write_file_via_temp(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // Splits one CSV line (no quoting: bench.csv has none) — for tests and tools.

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "bench/adaptive_configs.h"
+
 namespace sdfreel::bench {
 
 namespace {
@@ -90,6 +92,7 @@ std::vector<BenchConfig> sweep_configs() {
     c.name = fmt("reference:spp=%g", n);
     out.push_back(c);
   }
+  for (const BenchConfig& c : adaptive_configs()) out.push_back(c);
   return out;
 }
 
@@ -110,7 +113,8 @@ std::string settings_text(const BenchConfig& c) {
                 quality_name(c.quality), c.samples, m.max_steps, double(m.hit_eps),
                 double(m.step_factor), double(m.normal_eps), m.shadow_steps, m.reflect_steps,
                 double(m.max_dist), int(m.naive), int(m.hit_mask));
-  return b;
+  // Only adaptive points add text, so fixed points (and the reference cache) keep their keys.
+  return c.adaptive.enabled ? std::string(b) + " adaptive: " + adaptive_text(c.adaptive) : b;
 }
 
 }  // namespace sdfreel::bench

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "render/adaptive_sampling.h"
 #include "render/quality.h"
 
 namespace sdfreel::bench {
@@ -14,6 +15,7 @@ struct BenchConfig {
   MarchSettings march{};
   int samples = 1;
   bool named_preset = false;
+  AdaptiveSampling adaptive{};  // enabled: instead of `samples`
 };
 
 // naive, draft, final: quality.cpp's numbers at the samples each preset was chosen for.

@@ -25,7 +25,7 @@ std::string format_table(const std::vector<BenchRow>& rows, bool all) {
     if (!all && !r.named_preset && !r.on_front) continue;
     out += "| " + r.scene + " | " + r.backend + " | " +
            (r.named_preset ? "**" + r.preset + "**" : r.preset) + " | " +
-           std::to_string(r.samples) + " | " + num("%.4f", r.seconds_per_frame) + " | " +
+           num("%.3g", r.mean_samples) + " | " + num("%.4f", r.seconds_per_frame) + " | " +
            num("%.2f", r.psnr_db) + " | " + num("%.5f", r.rmse) + " | " +
            num("%.4f", r.p99_abs_error) + " | " + num("%.4f", r.hitmiss_fraction) + " | " +
            num("%.1f", r.sdf_evals_per_pixel) + " | " + (r.on_front ? "yes" : "") + " |\n";

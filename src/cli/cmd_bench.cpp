@@ -120,6 +120,8 @@ FrameContext bench_context(const FramePipeline& pipe, int frame, const BenchConf
   FrameContext ctx = frame_context(pipe.timeline(), pipe.scene(), frame);
   ctx.quality = cfg.quality;
   ctx.samples = mask ? 1 : cfg.samples;
+  ctx.adaptive = cfg.adaptive;
+  ctx.adaptive.enabled = cfg.adaptive.enabled && !mask;
   finish_frame_context(ctx);
   ctx.march = cfg.march;
   ctx.march.hit_mask = mask;
@@ -189,12 +191,13 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   const std::vector<FrameContext> contexts = bench_contexts(pipe, t, cfg);
   bench::ErrorAccumulator error;
   RayStats stats;
-  double seconds = 0.0;
+  double seconds = 0.0, samples = 0.0;
   for (size_t i = 0; i < contexts.size(); ++i) {
     const RenderedFrame f = pipe.render_context(contexts[i]);
     seconds += f.seconds;
     error.add(f.display, ref.display[i]);
     stats.add(f.stats);
+    for (uint16_t n : pipe.backend().sample_counts()) samples += n;
   }
   times.push_back(seconds / double(contexts.size()));
   row.seconds_per_frame = times.back();
@@ -208,6 +211,7 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   row.p99_abs_error = m.p99_abs_error;
   row.hitmiss_fraction = hits.fraction();
   const double pixels = double(t.tl.width) * t.tl.height * double(t.frames.size());
+  row.mean_samples = samples / pixels;
   row.sdf_evals_per_pixel = double(stats.sdf_evals) / pixels;
   // Only the CPU backend counts rays that ran out of steps (the shader reports SDF evaluations).
   row.capped_per_pixel =

@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "cli/commands_impl.h"
 #include "cli/slurm_job.h"
@@ -16,19 +15,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Checked like every other file (io/atomic_file.h); sbatch reads the script, so the mode bits are
+// only for running it by hand.
 void write_script(const std::string& path, const std::string& text) {
-  const std::string temp = temp_path_for(path);
-  {
-    std::ofstream f(temp, std::ios::binary);
-    f << text;
-    if (!(f.flush())) {
-      discard_temp_file(temp);
-      throw RenderError("cannot write " + path);
-    }
+  try {
+    write_file_atomic(path, text);
+  } catch (const std::runtime_error& e) {
+    throw RenderError(e.what());
   }
-  fs::permissions(temp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+  fs::permissions(path, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                             fs::perms::others_read | fs::perms::others_exec);
-  commit_temp_file(temp, path);
 }
 
 // `sbatch --parsable ...` prints "JOBID" or "JOBID;CLUSTER". Returns "" on failure.

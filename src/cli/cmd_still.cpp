@@ -1,10 +1,12 @@
 // `sdfreel still TIMELINE --time SECONDS -o FILE`: one frame at any video time.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "cli/commands_impl.h"
 #include "io/frame_files.h"
+#include "io/sample_count_images.h"
 
 namespace sdfreel {
 
@@ -14,12 +16,16 @@ struct StillOptions {
   RenderOptions render;
   double time = 0.0;
   std::string output;
+  std::string sample_counts;  // "" = none; .exr exact counts, .png heat map
 };
 
 int run_still(const StillOptions& o) {
   const std::string ext = std::filesystem::path(o.output).extension().string();
   if (ext != ".exr" && ext != ".png")
     throw UsageError("-o " + o.output + ": the file must end in .exr or .png");
+  const std::string counts_ext = std::filesystem::path(o.sample_counts).extension().string();
+  if (!o.sample_counts.empty() && counts_ext != ".exr" && counts_ext != ".png")
+    throw UsageError("--sample-counts " + o.sample_counts + ": the file must end in .exr or .png");
   if (!std::isfinite(o.time) || o.time < 0.0)
     throw UsageError("--time must be a finite number of seconds >= 0");
   RenderOptions ro = o.render;
@@ -32,6 +38,19 @@ int run_still(const StillOptions& o) {
     write_exr_atomic(o.output, f.linear, frame_metadata(tl, f));
   else
     write_png16_atomic(o.output, f.display);
+  if (!o.sample_counts.empty()) {
+    const SampleCounts& counts = pipe.backend().sample_counts();
+    if (counts_ext == ".exr")
+      write_exr_atomic(o.sample_counts, sample_count_image(counts, tl.width, tl.height),
+                       frame_metadata(tl, f));
+    else
+      write_png16_atomic(o.sample_counts, sample_heat_map(counts, tl.width, tl.height,
+                                                          int(f.ctx.sample_offsets.size())));
+    double mean = 0.0;
+    for (uint16_t n : counts) mean += n;
+    std::fprintf(stderr, "wrote %s (%.2f samples a pixel on average)\n", o.sample_counts.c_str(),
+                 mean / double(std::max<size_t>(counts.size(), 1)));
+  }
   std::fprintf(stderr, "wrote %s (TIME %.6g) in %.2f s\n", o.output.c_str(), f.ctx.scene_time,
                f.seconds);
   return 0;
@@ -51,6 +70,9 @@ void add_still_command(CLI::App& app, int& status) {
   cmd->add_option("--threads", o->render.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--resolution", o->render.resolution, "WxH, overrides the timeline");
+  cmd->add_option("--sample-counts", o->sample_counts,
+                  "also write the samples each pixel took: .exr (exact, every channel) or .png "
+                  "(heat map, log scale up to the maximum)");
   cmd->add_option("--samples", o->render.samples, "samples per pixel")->check(CLI::Range(1, 1024));
   cmd->add_option("--quality", o->render.quality, "draft | final | reference")
       ->check(CLI::IsMember({"draft", "final", "reference"}));

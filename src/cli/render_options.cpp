@@ -62,7 +62,10 @@ Timeline load_with_overrides(const RenderOptions& o) {
     tl.width = int(r.width);
     tl.height = int(r.height);
   }
-  if (o.samples) tl.samples = o.samples;
+  if (o.samples) {
+    tl.samples = o.samples;
+    tl.adaptive.enabled = false;  // --samples asks for fixed sampling
+  }
   if (!o.quality.empty()) tl.quality = *parse_quality(o.quality);
   if (!o.out.empty()) tl.out_dir = o.out;
   if (o.no_video) tl.video.clear();

@@ -8,12 +8,12 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
 #include "io/fault_injection.h"
+#include "io/temp_name.h"
 
 namespace fs = std::filesystem;
 
@@ -26,22 +26,24 @@ std::atomic<unsigned long> g_temp_counter{0};
   throw std::runtime_error("cannot " + what + " " + path + ": " + std::strerror(err));
 }
 
-void fsync_path(const std::string& path, int flags) {
+// Errors name `shown`: the file being published, which is what the user knows.
+void fsync_path(const std::string& path, int flags, const std::string& shown) {
   const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) fail("open", path, errno);
+  if (fd < 0) fail("open", shown, errno);
   const int rc = inject_io_fault() ? -1 : ::fsync(fd);
   const int err = errno;
   ::close(fd);
   // Some file systems cannot fsync a directory (EINVAL): the rename is still atomic there.
-  if (rc != 0 && err != EINVAL) fail("flush to disk", path, err);
+  if (rc != 0 && err != EINVAL) fail("flush to disk", shown, err);
 }
 
 }  // namespace
 
 std::string temp_path_for(const std::string& path) {
   const fs::path p(path);
-  const std::string name = "." + p.filename().string() + ".tmp-" + std::to_string(::getpid()) +
-                           "-" + std::to_string(g_temp_counter.fetch_add(1));
+  const std::string name = "." + p.filename().string() + ".tmp-" + temp_host_name() + "-" +
+                           std::to_string(::getpid()) + "-" +
+                           std::to_string(g_temp_counter.fetch_add(1));
   return (p.parent_path() / name).string();
 }
 
@@ -89,7 +91,7 @@ void write_file_atomic(const std::string& path, const void* data, size_t size) {
 
 void commit_temp_file(const std::string& temp, const std::string& path) {
   try {
-    fsync_path(temp, O_RDONLY);
+    fsync_path(temp, O_RDONLY, path);
     if (inject_io_fault() || std::rename(temp.c_str(), path.c_str()) != 0)
       throw std::runtime_error("cannot rename " + temp + " to " + path + ": " +
                                std::strerror(errno));
@@ -99,7 +101,7 @@ void commit_temp_file(const std::string& temp, const std::string& path) {
   }
   // Make the rename itself durable.
   const fs::path dir = fs::path(path).parent_path();
-  fsync_path(dir.empty() ? "." : dir.string(), O_RDONLY | O_DIRECTORY);
+  fsync_path(dir.empty() ? "." : dir.string(), O_RDONLY | O_DIRECTORY, path + " (its folder)");
 }
 
 void discard_temp_file(const std::string& temp) noexcept {
@@ -110,13 +112,12 @@ void discard_temp_file(const std::string& temp) noexcept {
 int remove_stale_temp_files(const std::string& dir) {
   int removed = 0;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = entry.path().filename().string();
-    const size_t at = name.rfind(".tmp-");
-    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
-    const long pid = std::atol(name.c_str() + at + 5);
-    if (pid > 0 && std::filesystem::exists("/proc/" + std::to_string(pid))) continue;
-    if (std::filesystem::remove(entry.path(), ec)) ++removed;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const TempName t = parse_temp_name(entry.path().filename().string());
+    // Another node's temporaries are its own business: its PIDs mean nothing here.
+    if (!t.valid || t.host != temp_host_name()) continue;
+    if (fs::exists("/proc/" + std::to_string(t.pid))) continue;
+    if (fs::remove(entry.path(), ec)) ++removed;
   }
   return removed;
 }

@@ -7,7 +7,8 @@
 
 namespace sdfreel {
 
-// A hidden temporary name beside `path`, unique per process and call: ".NAME.tmp-PID-N".
+// A hidden temporary name beside `path`, unique per host, process and call:
+// ".NAME.tmp-HOST-PID-N" (io/temp_name.h).
 // It does not end in the destination's extension, so frame globs never pick it up.
 std::string temp_path_for(const std::string& path);
 
@@ -31,8 +32,9 @@ void commit_temp_file(const std::string& temp, const std::string& path);
 // Removes `temp` if it exists, ignoring errors (cleanup after a failed write).
 void discard_temp_file(const std::string& temp) noexcept;
 
-// Removes temporary files in `dir` left by killed writers (their PID no longer runs). Files of
-// live processes (a concurrent shard) are left alone. Returns how many were removed.
+// Removes temporary files in `dir` left by killed writers of this host (their PID no longer runs
+// here). Files of live processes (a concurrent shard) and of other hosts (shared storage: their
+// PIDs cannot be checked from here) are left alone. Returns how many were removed.
 int remove_stale_temp_files(const std::string& dir);
 
 }  // namespace sdfreel

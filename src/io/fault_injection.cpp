@@ -7,11 +7,11 @@
 namespace sdfreel {
 namespace {
 
-long fault_at() {
-  static const long at = [] {
+std::atomic<long>& fault_at() {
+  static std::atomic<long> at{[] {
     const char* v = std::getenv("SDFREEL_FAULT_AT");
     return v ? std::atol(v) : 0L;
-  }();
+  }()};
   return at;
 }
 
@@ -21,10 +21,15 @@ thread_local int t_paused = 0;
 }  // namespace
 
 bool inject_io_fault() {
-  const long at = fault_at();
+  const long at = fault_at().load(std::memory_order_relaxed);
   if (at <= 0 || t_paused > 0 || g_operations.fetch_add(1) + 1 != at) return false;
   errno = ENOSPC;
   return true;
+}
+
+void set_io_fault_at(long n) {
+  g_operations = 0;
+  fault_at() = n;
 }
 
 FaultInjectionPause::FaultInjectionPause() {

@@ -7,6 +7,10 @@ namespace sdfreel {
 // True when this operation must fail; sets errno to ENOSPC then.
 bool inject_io_fault();
 
+// For tests inside one process: the N-th operation from now fails (0: none), as
+// SDFREEL_FAULT_AT=N does for a whole process.
+void set_io_fault_at(long n);
+
 // While one lives, this thread's operations are neither counted nor failed (cache files: not
 // outputs of the render, and written only when the cache misses).
 class FaultInjectionPause {

@@ -21,8 +21,8 @@ bool ManifestHeader::same_render_as(const ManifestHeader& o) const {
   return timeline_sha256 == o.timeline_sha256 && scene == o.scene && backend == o.backend &&
          versions == o.versions && width == o.width && height == o.height && fps_num == o.fps_num &&
          fps_den == o.fps_den && frame_count == o.frame_count && samples == o.samples &&
-         quality == o.quality && color_config == o.color_config && display == o.display &&
-         view == o.view;
+         adaptive == o.adaptive && quality == o.quality && color_config == o.color_config &&
+         display == o.display && view == o.view;
 }
 
 json manifest_frame_json(const ManifestFrame& f) {
@@ -64,6 +64,7 @@ std::string manifest_to_json(const Manifest& m) {
   j["fps"] = std::to_string(h.fps_num) + "/" + std::to_string(h.fps_den);
   j["frame_count"] = h.frame_count;
   j["samples"] = h.samples;
+  if (!h.adaptive.empty()) j["adaptive"] = h.adaptive;
   j["quality"] = h.quality;
   j["color"] = {{"config", h.color_config}, {"display", h.display}, {"view", h.view}};
   j["codec"] = h.codec;
@@ -93,6 +94,7 @@ Manifest manifest_from_json(const std::string& text) {
       throw std::runtime_error("bad fps '" + fps + "'");
     h.frame_count = j.at("frame_count");
     h.samples = j.at("samples");
+    h.adaptive = j.value("adaptive", "");
     h.quality = j.at("quality");
     h.color_config = j.at("color").at("config");
     h.display = j.at("color").at("display");

@@ -34,6 +34,7 @@ struct ManifestHeader {
   int64_t fps_num = 30, fps_den = 1;
   int frame_count = 0;  // frames in the whole timeline
   int samples = 1;
+  std::string adaptive;  // adaptive sampling's settings ("" = fixed `samples`)
   std::string quality;
   std::string color_config, display, view;
   std::string codec;                     // of the timeline, used by `encode` as the default

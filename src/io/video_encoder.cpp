@@ -57,7 +57,7 @@ struct VideoEncoder::Impl {
 
   explicit Impl(const VideoSettings& s) : settings(s), spec(checked_codec(s)) {
     const AVRational fps = checked_fps(s.fps);
-    // Chosen from the final name: the temporary one (".NAME.tmp-PID-N") has no extension.
+    // Chosen from the final name: the temporary one (".NAME.tmp-HOST-PID-N") has no extension.
     const AVOutputFormat* container = av_guess_format(nullptr, s.path.c_str(), nullptr);
     if (!container)
       throw std::runtime_error("video: cannot tell the container from the file name " + s.path +

@@ -1,8 +1,8 @@
 #pragma once
-// Where the muxer's bytes go: a temporary file unique to this writer (".NAME.tmp-PID-N" beside the
-// video), written through a custom AVIOContext so that every write is checked (a full disk fails
-// the encode) and published by rename only when complete. Two writers of one video never share a
-// temporary file, and the last complete one wins the rename.
+// Where the muxer's bytes go: a temporary file unique to this writer (".NAME.tmp-HOST-PID-N"
+// beside the video), written through a custom AVIOContext so that every write is checked (a full
+// disk fails the encode) and published by rename only when complete. Two writers of one video never
+// share a temporary file, and the last complete one wins the rename.
 #include <string>
 
 #include "io/video_av.h"

@@ -7,6 +7,7 @@
 
 #include "render/frame_context.h"
 #include "render/image.h"
+#include "render/live_pixels.h"
 
 namespace sdfreel {
 
@@ -23,6 +24,8 @@ class Backend {
   virtual void begin(const SceneInfo& scene) = 0;
   // The linear RGBA image of one frame. Deterministic: depends on ctx only.
   virtual ImageRGBA render(const FrameContext& ctx, RayStats& stats) = 0;
+  // Samples each pixel of the last rendered frame took (all the same unless adaptive).
+  virtual const SampleCounts& sample_counts() const = 0;
 };
 
 }  // namespace sdfreel

@@ -80,8 +80,15 @@ struct MeshFragment {
   bool front_facing;
 };
 
+// A vertex after a custom vertex stage: world position and (unnormalised) world normal.
+struct PlacedVertex {
+  glm::vec3 world, normal;
+};
+
 // Triangles with depth test and write, cull mode and alpha discard (alpha < alpha_cutoff is
-// discarded). CPU: `shade` per covered sample. GL: `vertex` and `fragment` shader files.
+// discarded). CPU: `shade` per covered sample, and `place` per vertex when the pass has its own
+// `vertex` shader (empty: world = model * position, normal = mat3(model) * normal, as
+// common/mesh.vert). GL: `vertex` and `fragment` shader files.
 struct MeshPass {
   std::string name;
   std::shared_ptr<const TriangleMesh> mesh;  // shared: backends cache their copy by this pointer
@@ -98,6 +105,9 @@ struct MeshPass {
   // fragment's colour and its own window depth, or false to discard. The depth test and write use
   // that depth (a late test, as GL does when the fragment shader writes gl_FragDepth).
   std::function<bool(const MeshFragment&, glm::vec4& colour, float& depth)> shade_depth;
+  std::function<PlacedVertex(const MeshInstance&, const glm::vec3& position,
+                             const glm::vec3& normal)>
+      place;
 };
 
 // The images an image pass reads, in the order of ImagePass::inputs.

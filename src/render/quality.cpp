@@ -1,5 +1,7 @@
 #include "render/quality.h"
 
+#include "render/adaptive_sampling.h"
+
 namespace sdfreel {
 
 // The one place where preset numbers live. hit_eps and normal_eps are in units of the pixel
@@ -45,6 +47,20 @@ int preset_samples(Quality q) {
 // The baseline at the sample count of `final`, so that the two differ only in how they march.
 int naive_preset_samples() {
   return preset_samples(Quality::Final);
+}
+
+// First numbers, not tuned yet: README "Adaptive sampling" has what the bench measured (the
+// issue's targets are not met by this estimator yet).
+AdaptiveSampling adaptive_preset(Quality q) {
+  switch (q) {
+    case Quality::Draft:
+      return AdaptiveSampling{true, 1, 4, 0.01f};
+    case Quality::Final:
+      return AdaptiveSampling{true, 2, 16, 0.005f};
+    case Quality::Reference:
+      return AdaptiveSampling{true, 8, 64, 0.001f};
+  }
+  return adaptive_preset(Quality::Final);
 }
 
 std::optional<Quality> parse_quality(const std::string& name) {

@@ -8,6 +8,7 @@
 namespace sdfreel {
 
 enum class Quality { Draft, Final, Reference };
+struct AdaptiveSampling;
 
 struct MarchSettings {
   int max_steps;      // primary-ray step cap
@@ -43,6 +44,8 @@ MarchSettings naive_march_settings();
 // preset's error budget holds at this sample count or more.
 int preset_samples(Quality q);
 int naive_preset_samples();
+// Adaptive sampling of a preset (timeline `adaptive = true`; render/adaptive_sampling.h), enabled.
+AdaptiveSampling adaptive_preset(Quality q);
 std::optional<Quality> parse_quality(const std::string& name);
 const char* quality_name(Quality q);
 

@@ -10,7 +10,8 @@
   SCENE(water_lily)           \
   SCENE(light_beams)          \
   SCENE(lenticular_card)      \
-  SCENE(museum)
+  SCENE(museum)               \
+  SCENE(fur)
 
 namespace sdfreel {
 

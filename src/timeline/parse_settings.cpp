@@ -69,8 +69,9 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
                              const std::vector<SceneInfo>& scenes, Timeline& tl) {
   const toml::table* video = section(r, root, "video");
   if (!video) r.fail(toml::source_region{}, "missing table [video] (its 'scene' key is required)");
-  r.check_keys(*video, "[video]",
-               {"scene", "fps", "duration", "resolution", "samples", "quality", "seed"});
+  r.check_keys(
+      *video, "[video]",
+      {"scene", "fps", "duration", "resolution", "samples", "adaptive", "quality", "seed"});
 
   const toml::node& scene_node = r.require(*video, "scene", "[video]");
   tl.scene = r.string(scene_node, "video.scene");
@@ -123,6 +124,7 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
   }
   if (const toml::node* n = video->get("seed"))
     tl.seed = uint64_t(r.integer_in(*n, "video.seed", 0, INT64_MAX));
+  parse_adaptive(r, *video, tl);
   return *scene;
 }
 

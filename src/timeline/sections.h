@@ -12,6 +12,8 @@ namespace sdfreel {
 // [video]; returns the scene it names (required), one of `scenes`.
 const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
                              const std::vector<SceneInfo>& scenes, Timeline& tl);
+// [video] adaptive (after quality, whose preset gives the defaults).
+void parse_adaptive(const TomlReader& r, const toml::table& video, Timeline& tl);
 void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_color(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_time(const TomlReader& r, const toml::table& root, Timeline& tl);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "render/adaptive_sampling.h"
 #include "render/camera.h"
 #include "render/quality.h"
 #include "timeline/curve.h"
@@ -63,6 +64,7 @@ struct Timeline {
   double duration = 10.0;
   int width = 1280, height = 720;
   int samples = 4;
+  AdaptiveSampling adaptive;  // enabled: per-pixel adaptive sampling instead of `samples`
   Quality quality = Quality::Final;
   uint64_t seed = 1;
 

@@ -32,7 +32,8 @@ enum class Mode {
   FinalHitMask,
   NaiveHitMask,
   ParamsMin,
-  ParamsMax
+  ParamsMax,
+  FinalAdaptive  // per-pixel adaptive sampling: the same samples a pixel and the same sums
 };
 
 struct Case {
@@ -63,6 +64,10 @@ FrameContext context(const SceneInfo& info, Mode mode, const CameraPose& pose) {
   finish_frame_context(ctx);
   if (mode == Mode::Naive || mode == Mode::NaiveHitMask) ctx.march = naive_march_settings();
   ctx.march.hit_mask = mode == Mode::FinalHitMask || mode == Mode::NaiveHitMask;
+  if (mode == Mode::FinalAdaptive) {
+    ctx.adaptive = AdaptiveSampling{true, 2, 8, 0.01f};
+    finish_frame_context(ctx);
+  }
   return ctx;
 }
 
@@ -114,6 +119,7 @@ class Agreement : public ::testing::TestWithParam<Case> {
                         << b.at(x, y)[0] << ", " << b.at(x, y)[1] << ", " << b.at(x, y)[2] << ")";
     EXPECT_EQ(differing, 0) << what << ": pixels that differ";
     EXPECT_EQ(cpu_stats.sdf_evals, gl_stats.sdf_evals) << what;
+    EXPECT_EQ(cpu.sample_counts(), osmesa->sample_counts()) << what;
     return cpu_stats.sdf_evals;
   }
 
@@ -137,7 +143,8 @@ TEST_P(Agreement, BothBackendsGiveTheSameBits) {
   // Mesh passes count no SDF evaluations (museum's exhibit marches inside a mesh pass).
   const bool marches = !info->make()->distance_functions().empty();
   if (marches && !meshes &&
-      (m == Mode::Draft || m == Mode::Final || m == Mode::Reference || m == Mode::Naive)) {
+      (m == Mode::Draft || m == Mode::Final || m == Mode::Reference || m == Mode::Naive ||
+       m == Mode::FinalAdaptive)) {
     EXPECT_GT(evals, uint64_t(W * H) * poses.size());
   }
 }
@@ -146,14 +153,15 @@ std::vector<Case> cases() {
   std::vector<Case> out;
   for (const SceneInfo& s : all_scenes())
     for (Mode m : {Mode::Draft, Mode::Final, Mode::Reference, Mode::Naive, Mode::FinalHitMask,
-                   Mode::NaiveHitMask, Mode::ParamsMin, Mode::ParamsMax})
+                   Mode::NaiveHitMask, Mode::ParamsMin, Mode::ParamsMax, Mode::FinalAdaptive})
       out.push_back({s.name, m});
   return out;
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& i) {
-  static const char* const names[] = {"draft",         "final",         "reference",  "naive",
-                                      "final_hitmask", "naive_hitmask", "params_min", "params_max"};
+  static const char* const names[] = {"draft",      "final",         "reference",
+                                      "naive",      "final_hitmask", "naive_hitmask",
+                                      "params_min", "params_max",    "final_adaptive"};
   return i.param.scene + "_" + names[int(i.param.mode)];
 }
 

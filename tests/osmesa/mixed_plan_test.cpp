@@ -48,5 +48,29 @@ TEST_F(OsmesaTest, RayPassWithDepthIsBitIdentical) {
   EXPECT_GT(lit, 100);
 }
 
+// Adaptive sampling through the per-sample loop of both runners (a ray pass with depth is not run
+// per pixel): the same samples a pixel, the same sums, edges sampled more than the flat inside.
+TEST_F(OsmesaTest, AdaptiveRayPassWithDepthIsBitIdentical) {
+  FrameContext ctx = test::mixed_context(64, 36, 1);
+  ctx.adaptive = AdaptiveSampling{true, 2, 6, 0.01f};
+  finish_frame_context(ctx);
+  FramePlan plan = test::mixed_plan(ctx);
+  plan.passes.erase(plan.passes.begin());
+  GlPlanRunner runner(*driver);
+  RayStats stats;
+  SampleCounts gl_counts, cpu_counts;
+  const ImageRGBA gl = runner.run(plan, ctx, {}, stats, &gl_counts);
+  const ImageRGBA cpu = run_plan_cpu(plan, ctx, {}, stats, &cpu_counts);
+  EXPECT_EQ(gl.pixels, cpu.pixels);
+  EXPECT_EQ(gl_counts, cpu_counts);
+  int at_min = 0, at_max = 0;
+  for (uint16_t n : cpu_counts) {
+    at_min += n == 2;
+    at_max += n == 6;
+  }
+  EXPECT_GT(at_min, 100);
+  EXPECT_GT(at_max, 10);
+}
+
 }  // namespace
 }  // namespace sdfreel

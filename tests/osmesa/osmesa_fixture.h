@@ -1,6 +1,6 @@
 #pragma once
 // Shared set-up of the OSMesa tests: a context (or a skip that says why there is none) and a
-// scratch shader folder holding the test shaders beside a link to the real shaders/common.
+// scratch shader folder holding the test shaders beside links to the real shader folders.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 
 namespace sdfreel::test {
 
-// A scratch folder: tests/osmesa/shaders/* copied in, common -> <source>/shaders/common. Removed
+// A scratch folder: tests/osmesa/shaders/* copied in, links to <source>/shaders/<folder>. Removed
 // when the test program exits.
 inline std::string test_shader_dir() {
   namespace fs = std::filesystem;
@@ -24,7 +24,8 @@ inline std::string test_shader_dir() {
       fs::remove_all(path);
       fs::create_directories(path);
       const fs::path src = fs::path(SDFREEL_SOURCE_DIR);
-      fs::create_directory_symlink(src / "shaders" / "common", path / "common");
+      for (const auto& e : fs::directory_iterator(src / "shaders"))  // common/, scene folders
+        if (e.is_directory()) fs::create_directory_symlink(e.path(), path / e.path().filename());
       for (const auto& e : fs::directory_iterator(src / "tests" / "osmesa" / "shaders"))
         fs::copy_file(e.path(), path / e.path().filename());
     }

@@ -21,11 +21,13 @@ class CpuBackend : public Backend {
   std::map<std::string, std::string> versions() const override;
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
+  const SampleCounts& sample_counts() const override { return counts_; }
 
  private:
   int threads_, tile_size_;
   bool packets_;
   std::unique_ptr<Scene> scene_;
+  SampleCounts counts_;
 };
 
 }  // namespace sdfreel

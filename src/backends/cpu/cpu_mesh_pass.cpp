@@ -74,14 +74,21 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
       ClipVertex v[3];
       for (int k = 0; k < 3; ++k) {
         const unsigned i = m.index(t * 3 + size_t(k));
-        const glm::vec4 world = inst.model * glm::vec4(m.positions[i * 3], m.positions[i * 3 + 1],
-                                                       m.positions[i * 3 + 2], 1.0f);
-        v[k].world = glm::vec3(world);
-        v[k].clip = view_proj * world;
-        v[k].normal = m.normals.empty()
-                          ? glm::vec3(0.0f)
-                          : normal_matrix * glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
-                                                      m.normals[i * 3 + 2]);
+        const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1],
+                                 m.positions[i * 3 + 2]);
+        const glm::vec3 normal =
+            m.normals.empty()
+                ? glm::vec3(0.0f)
+                : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1], m.normals[i * 3 + 2]);
+        if (pass.place) {
+          const PlacedVertex placed = pass.place(inst, position, normal);
+          v[k].world = placed.world;
+          v[k].normal = placed.normal;
+        } else {
+          v[k].world = glm::vec3(inst.model * glm::vec4(position, 1.0f));
+          v[k].normal = normal_matrix * normal;
+        }
+        v[k].clip = view_proj * glm::vec4(v[k].world, 1.0f);
         v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
       }
       ClipVertex clipped[6];
@@ -178,6 +185,32 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
     }
 }
 
+// The triangles whose pixel bounds may touch each tile, in mesh order (so each pixel still sees
+// its fragments in the same order): a pass of many triangles (fur shells) then costs each tile only
+// its own triangles. The bounds are conservative; rasterise() clips exactly.
+std::vector<std::vector<unsigned>> bin_by_tile(const std::vector<ScreenTriangle>& triangles,
+                                               const FrameContext& f, int tile_size) {
+  const int cols = (f.width + tile_size - 1) / tile_size;
+  const int rows = (f.height + tile_size - 1) / tile_size;
+  std::vector<std::vector<unsigned>> bins(size_t(cols * rows));
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const glm::dvec2* p = triangles[i].p;
+    // Window rows run up, image rows down: image row y = height - 1 - window row.
+    const double lo_x = std::min({p[0].x, p[1].x, p[2].x}) - 1.0;
+    const double hi_x = std::max({p[0].x, p[1].x, p[2].x}) + 1.0;
+    const double lo_y = f.height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0);
+    const double hi_y = f.height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0);
+    if (hi_x < 0.0 || lo_x >= f.width || hi_y < 0.0 || lo_y >= f.height) continue;
+    const int c0 = int(std::max(lo_x, 0.0)) / tile_size;
+    const int c1 = std::min(cols - 1, int(std::min(hi_x, double(f.width - 1))) / tile_size);
+    const int r0 = int(std::max(lo_y, 0.0)) / tile_size;
+    const int r1 = std::min(rows - 1, int(std::min(hi_y, double(f.height - 1))) / tile_size);
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
+  }
+  return bins;
+}
+
 }  // namespace
 
 void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
@@ -192,8 +225,9 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
   }
   const std::vector<ScreenTriangle> triangles = setup(pass, pc);
   const FrameContext& f = pc.frame;
+  const std::vector<std::vector<unsigned>> bins = bin_by_tile(triangles, f, pc.tile_size);
   for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (const ScreenTriangle& s : triangles) rasterise(s, pass, t, f.height, out);
+    for (unsigned i : bins[size_t(t.index)]) rasterise(triangles[i], pass, t, f.height, out);
   });
 }
 

@@ -10,8 +10,19 @@
 
 namespace sdfreel {
 
+namespace {
+
+// Adds the sample's colour (all four channels, as the fixed sum always did) to live pixels.
+void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum) {
+  for (size_t i = 0, n = sum.pixels.size() / 4; i < n; ++i)
+    if (live.live(i))
+      for (size_t c = 0; c < 4; ++c) sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+}
+
+}  // namespace
+
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
-                       RayStats& stats) {
+                       RayStats& stats, SampleCounts* counts) {
   CpuPassContext pc{
       ctx,
       glm::vec2(0.5f),
@@ -24,12 +35,14 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     glm::vec4 clear(0.0f);
     for (const TargetSpec& t : plan_targets(plan))
       if (t.name == COLOUR_TARGET) clear = t.clear;
-    return run_ray_pass_resolved(*ray, pc, clear, stats);
+    return run_ray_pass_resolved(*ray, pc, clear, stats, counts);
   }
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
-  ImageRGBA sum(ctx.width, ctx.height);
-  for (const glm::vec2& offset : ctx.sample_offsets) {
-    pc.offset = offset;
+  ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
+  LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
+  for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
+    if (live.round_ends_at(i) && live.decide(i, sum, sum_odd) == 0) break;
+    pc.offset = ctx.sample_offsets[size_t(i)];
     targets.clear();
     for (const Pass& pass : plan.passes) {
       if (const auto* ray = std::get_if<RayPass>(&pass))
@@ -40,16 +53,12 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
         run_image_pass(std::get<ImagePass>(pass), pc, targets);
     }
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
-    for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += colour.pixels[i];
+    add_live(colour, live, sum);
+    if (i & 1) add_live(colour, live, sum_odd);
   }
   // Times 1 / count, as the samples' mean always was; alpha is coverage, 1 for every frame.
-  const float inv_samples = 1.0f / float(ctx.sample_offsets.size());
-  for (size_t i = 0; i < sum.pixels.size(); i += 4) {
-    sum.pixels[i] *= inv_samples;
-    sum.pixels[i + 1] *= inv_samples;
-    sum.pixels[i + 2] *= inv_samples;
-    sum.pixels[i + 3] = 1.0f;
-  }
+  normalise_sums(sum, live.counts());
+  if (counts) *counts = live.counts();
   return sum;
 }
 

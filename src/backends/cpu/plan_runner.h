@@ -1,9 +1,14 @@
 #pragma once
 // Runs a frame plan on the CPU: per sample offset, in list order, clear the targets and run every
 // pass in plan order; add the sample's "colour" to the frame's sum; the frame is sum / count.
+// Adaptive sampling (render/adaptive_sampling.h): a plan of one ray pass runs per pixel
+// (cpu_ray_pass_resolved.h); any other plan runs every pass over the whole frame for each sample
+// while any pixel is live and adds the sample only to live pixels, so image passes still read
+// every neighbour. Such plans get the same pictures, but save time only when every pixel stops.
 #include "render/frame_context.h"
 #include "render/frame_plan.h"
 #include "render/image.h"
+#include "render/live_pixels.h"
 
 namespace sdfreel {
 
@@ -13,6 +18,6 @@ struct CpuRunSettings {
 };
 
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
-                       RayStats& stats);
+                       RayStats& stats, SampleCounts* counts = nullptr);
 
 }  // namespace sdfreel

@@ -12,6 +12,8 @@ namespace {
 constexpr const char* FULL_SCREEN_VERTEX = "common/fullscreen.vert";
 constexpr const char* SUM_COLOUR = "sum.colour";  // not names a plan can declare: they have a dot
 constexpr const char* SUM_EVALS = "sum.sdf_evals";
+constexpr const char* SUM_ODD = "sum.odd";
+constexpr const char* LIVE_MASK = "u_live_mask";
 
 ShaderUniform matrix(const std::string& name, const glm::mat4& m) {
   ShaderUniform u{name, 16, {}};
@@ -85,6 +87,7 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
     append(p.uniforms, scene.uniforms);
     append(p.uniforms, ray->uniforms);
     p.textures = scene.textures;
+    p.textures.push_back({LIVE_MASK, live_mask_});
   } else if (const auto* m = std::get_if<MeshPass>(&pass)) {
     p.program = program(m->vertex, m->fragment);
     p.mesh = mesh(m->mesh);
@@ -118,46 +121,70 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
   driver_.run(p);
 }
 
-void GlPlanRunner::accumulate() {
+void GlPlanRunner::accumulate(bool odd) {
   GlPass p;
   p.name = "accumulate samples";
   p.program = program(FULL_SCREEN_VERTEX, "common/accumulate.glsl");
-  p.target = targets_.framebuffer({SUM_COLOUR, SUM_EVALS}, "", p.name);
+  p.target = targets_.framebuffer({SUM_COLOUR, SUM_EVALS, SUM_ODD}, "", p.name);
   p.clear = false;
   p.blend = BlendMode::Add;
+  p.uniforms = {{"u_odd", 1, {odd ? 1.0f : 0.0f}}};
   p.textures = {{"u_colour", targets_.texture(COLOUR_TARGET, p.name)},
-                {"u_sdf_evals", targets_.texture(SDF_EVALS_TARGET, p.name)}};
+                {"u_sdf_evals", targets_.texture(SDF_EVALS_TARGET, p.name)},
+                {LIVE_MASK, live_mask_}};
   driver_.run(p);
 }
 
+// The mask as a one-channel float texture in GL's row order (row 0 at the bottom), so shaders
+// read it at gl_FragCoord.
+void GlPlanRunner::upload_live_mask(const std::vector<uint8_t>& live, int width, int height) {
+  ShaderTexture t{LIVE_MASK, width, height, 1, std::vector<float>(live.size())};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      t.texels[size_t(y) * width + x] = float(live[size_t(height - 1 - y) * width + x]);
+  live_mask_ = driver_.upload_texture(t);
+}
+
 ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
-                            const GlSceneInputs& scene, RayStats& stats) {
+                            const GlSceneInputs& scene, RayStats& stats, SampleCounts* counts) {
   std::vector<TargetSpec> specs = plan_targets(plan);
-  specs.push_back({SUM_COLOUR, TargetKind::Colour, glm::vec4(0.0f)});
-  specs.push_back({SUM_EVALS, TargetKind::Colour, glm::vec4(0.0f)});
+  const size_t plan_target_count = specs.size();
+  for (const char* sum : {SUM_COLOUR, SUM_EVALS, SUM_ODD})
+    specs.push_back({sum, TargetKind::Colour, glm::vec4(0.0f)});
   targets_.prepare(specs, ctx.width, ctx.height);
   const CameraModel cam =
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
-  targets_.clear(SUM_COLOUR);
-  targets_.clear(SUM_EVALS);
-  for (const glm::vec2& offset : ctx.sample_offsets) {
-    for (size_t i = 0; i + 2 < specs.size(); ++i) targets_.clear(specs[i].name);
-    const std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, offset);
+  for (const char* sum : {SUM_COLOUR, SUM_EVALS, SUM_ODD}) targets_.clear(sum);
+  LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
+  if (!live_mask_full_ || live_mask_size_ != glm::ivec2(ctx.width, ctx.height)) {
+    upload_live_mask(live.mask(), ctx.width, ctx.height);
+    live_mask_full_ = true;
+    live_mask_size_ = glm::ivec2(ctx.width, ctx.height);
+  }
+  // Only a plan of one ray pass may skip stopped pixels: other passes may read any pixel.
+  const bool one_ray_pass =
+      plan.passes.size() == 1 && std::holds_alternative<RayPass>(plan.passes[0]);
+  for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
+    if (live.round_ends_at(i)) {
+      const ImageRGBA sum = driver_.read_rgba(targets_.framebuffer({SUM_COLOUR}, "", "round"));
+      const ImageRGBA odd = driver_.read_rgba(targets_.framebuffer({SUM_ODD}, "", "round"));
+      if (live.decide(i, sum, odd) == 0) break;
+      upload_live_mask(live.mask(), ctx.width, ctx.height);
+      live_mask_full_ = false;
+    }
+    for (size_t k = 0; k < plan_target_count; ++k) targets_.clear(specs[k].name);
+    std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, ctx.sample_offsets[size_t(i)]);
+    base.push_back({"u_discard_stopped", 1, {one_ray_pass ? 1.0f : 0.0f}});
     for (const Pass& pass : plan.passes) run_pass(pass, scene, base);
-    accumulate();
+    accumulate(i & 1);
   }
   ImageRGBA img = driver_.read_rgba(targets_.framebuffer({SUM_COLOUR}, "", "read back"));
   const ImageRGBA evals = driver_.read_rgba(targets_.framebuffer({SUM_EVALS}, "", "read back"));
   // Times 1 / count as on the CPU; alpha is coverage, 1. Evaluation counts are exact integers in
   // float (below 2^24 a pixel).
-  const float inv_samples = 1.0f / float(ctx.sample_offsets.size());
-  for (size_t i = 0; i < img.pixels.size(); i += 4) {
-    img.pixels[i] *= inv_samples;
-    img.pixels[i + 1] *= inv_samples;
-    img.pixels[i + 2] *= inv_samples;
-    img.pixels[i + 3] = 1.0f;
-    stats.sdf_evals += uint64_t(evals.pixels[i]);
-  }
+  normalise_sums(img, live.counts());
+  for (size_t i = 0; i < evals.pixels.size(); i += 4) stats.sdf_evals += uint64_t(evals.pixels[i]);
+  if (counts) *counts = live.counts();
   return img;
 }
 

@@ -5,6 +5,12 @@
 // and "sdf_evals" into float sum targets (blend ONE + ONE: one IEEE add a channel, samples in list
 // order, the CPU's order). The frame is the sum read back times 1 / count, on the host as on the
 // CPU.
+//
+// Adaptive sampling (render/adaptive_sampling.h) in rounds: at the end of each round the sums
+// (all samples, and odd list positions in a third sum target) are read back, the host decides
+// which pixels go on with the CPU's code (render/live_pixels.h) and uploads a mask of live pixels;
+// the accumulation adds only live pixels, and a plan of one ray pass discards stopped pixels
+// before tracing. Fixed sampling is one round with every pixel live.
 #include <map>
 #include <memory>
 #include <string>
@@ -14,6 +20,7 @@
 #include "backends/osmesa/gl_targets.h"
 #include "render/frame_context.h"
 #include "render/frame_plan.h"
+#include "render/live_pixels.h"
 
 namespace sdfreel {
 
@@ -29,7 +36,7 @@ class GlPlanRunner {
  public:
   explicit GlPlanRunner(GlDriver& driver) : driver_(driver), targets_(driver.gl()) {}
   ImageRGBA run(const FramePlan& plan, const FrameContext& ctx, const GlSceneInputs& scene,
-                RayStats& stats);
+                RayStats& stats, SampleCounts* counts = nullptr);
   // Compiles (once) the program of a pass, for warm-up and error messages before the first frame.
   GlProgramId program(const std::string& vertex, const std::string& fragment);
 
@@ -37,12 +44,16 @@ class GlPlanRunner {
   GlMeshId mesh(const std::shared_ptr<const TriangleMesh>& m);
   void run_pass(const Pass& pass, const GlSceneInputs& scene,
                 const std::vector<ShaderUniform>& base);
-  void accumulate();
+  void accumulate(bool odd);
+  void upload_live_mask(const std::vector<uint8_t>& live, int width, int height);
 
   GlDriver& driver_;
   GlTargets targets_;
   std::map<std::string, GlProgramId> programs_;                     // by "vertex|fragment"
   std::map<std::shared_ptr<const TriangleMesh>, GlMeshId> meshes_;  // owns: pointers stay unique
+  GLuint live_mask_ = 0;
+  bool live_mask_full_ = false;  // every pixel live, at live_mask_size_
+  glm::ivec2 live_mask_size_{0};
 };
 
 }  // namespace sdfreel

@@ -81,7 +81,7 @@ ImageRGBA OsmesaBackend::render(const FrameContext& ctx, RayStats& stats) {
     textures_key_ = key;
   }
   inputs.textures = textures_;
-  return runner_->run(scene_->frame_plan(ctx), ctx, inputs, stats);
+  return runner_->run(scene_->frame_plan(ctx), ctx, inputs, stats, &counts_);
 }
 
 }  // namespace sdfreel

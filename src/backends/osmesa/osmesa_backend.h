@@ -23,6 +23,7 @@ class OsmesaBackend : public Backend {
   std::map<std::string, std::string> versions() const override;
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
+  const SampleCounts& sample_counts() const override { return counts_; }
 
  private:
   std::unique_ptr<OsmesaPlatform> platform_;
@@ -32,6 +33,7 @@ class OsmesaBackend : public Backend {
   std::string scene_shader_;
   std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_
   uint64_t textures_key_ = 0;
+  SampleCounts counts_;
 };
 
 }  // namespace sdfreel

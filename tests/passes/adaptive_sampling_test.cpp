@@ -1,0 +1,171 @@
+// Per-pixel adaptive sampling on the CPU (render/adaptive_sampling.h): the frame and the samples
+// each pixel took do not depend on threads, tiles, packets or the runner's path; threshold 0 is
+// fixed sampling at the maximum; a flat frame stops at the minimum everywhere; a pixel whose
+// samples keep disagreeing runs to the maximum.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "backends/cpu/plan_runner.h"
+#include "passes/plan_fixture.h"
+#include "scenes/registry.h"
+
+namespace sdfreel {
+namespace {
+
+// 0 or 1 from the bits of the ray direction: unrelated to the neighbours' rays.
+glm::vec3 hashed(const glm::vec3& d) {
+  uint32_t h = 0;
+  for (int c = 0; c < 3; ++c) {
+    uint32_t b;
+    std::memcpy(&b, &d[c], 4);
+    h = (h ^ b) * 0x9E3779B1u;
+  }
+  return glm::vec3(float((h >> 16) & 1u));
+}
+
+// A ray pass whose colour is hashed(dir), or a constant.
+RayPass test_pass(bool flat) {
+  RayPass p;
+  p.name = flat ? "flat" : "hashed";
+  auto colour = [flat](const glm::vec3& d) {
+    return flat ? glm::vec3(0.3f, 0.5f, 2.0f) : hashed(d);
+  };
+  p.packet = [colour](const RayPacket& r, RayPassOutput& out, RayStats&) {
+    for (int i = 0; i < r.count; ++i) {
+      out.colour[i] = colour(r.dir.lane(i));
+      out.keep[i] = true;
+    }
+  };
+  p.scalar = [colour](const Ray& r, glm::vec3& c, float&, bool& keep, RayStats&) {
+    c = colour(r.dir);
+    keep = true;
+  };
+  return p;
+}
+
+FramePlan plan_of(const RayPass& pass) {
+  FramePlan plan;
+  plan.passes = {pass};
+  return plan;
+}
+
+// Writes into a target of its own: the frame stays the same, but the plan runs once per sample.
+FramePlan with_side_pass(FramePlan plan) {
+  ImagePass p;
+  p.name = "side";
+  p.output = "side";
+  p.pixel = [](const ImageInputs&, int, int) { return glm::vec4(0.5f); };
+  plan.targets.push_back({"side", TargetKind::Colour, glm::vec4(0.0f)});
+  plan.passes.push_back(p);
+  return plan;
+}
+
+struct Rendered {
+  ImageRGBA image;
+  SampleCounts counts;
+};
+
+Rendered run(const FramePlan& plan, const FrameContext& ctx, CpuRunSettings s) {
+  Rendered r;
+  RayStats stats;
+  r.image = run_plan_cpu(plan, ctx, s, stats, &r.counts);
+  return r;
+}
+
+// Every way the CPU can run the plan: threads and tile sizes, the per-pixel packet path, single
+// rays, and the per-sample loop. All must give `want`'s bits and counts.
+void expect_every_way_gives(const FramePlan& plan, const FrameContext& ctx, const Rendered& want,
+                            const std::string& what) {
+  const Rendered ways[] = {run(plan, ctx, {1, 16, true}), run(plan, ctx, {2, 7, true}),
+                      run(plan, ctx, {2, 5, false}), run(with_side_pass(plan), ctx, {2, 16, true})};
+  for (const Rendered& r : ways) {
+    EXPECT_EQ(r.image.pixels, want.image.pixels) << what;
+    EXPECT_EQ(r.counts, want.counts) << what;
+  }
+}
+
+FrameContext adaptive_context(int w, int h, AdaptiveSampling a) {
+  FrameContext ctx = test::plan_context(w, h);
+  ctx.adaptive = a;
+  finish_frame_context(ctx);
+  return ctx;
+}
+
+TEST(AdaptiveSampling, FlatFrameStopsAtTheMinimumEverywhere) {
+  const FrameContext ctx = adaptive_context(21, 13, {true, 3, 16, 1e-6f});
+  const FramePlan plan = plan_of(test_pass(true));
+  const Rendered r = run(plan, ctx, {2, 16, true});
+  EXPECT_EQ(r.counts, SampleCounts(21 * 13, 3));
+  expect_every_way_gives(plan, ctx, r, "flat");
+}
+
+// Even samples all at one offset, odd samples at another: where the two rays' colours differ
+// the halves never agree, so the pixel runs to the maximum; elsewhere it stops at the minimum.
+TEST(AdaptiveSampling, PixelsThatNeverConvergeStopAtTheMaximum) {
+  const int w = 23, h = 11;
+  FrameContext ctx = adaptive_context(w, h, {true, 2, 12, 0.01f});
+  const glm::vec2 a(0.2f, 0.3f), b(0.7f, 0.8f);
+  for (size_t i = 0; i < ctx.sample_offsets.size(); ++i) ctx.sample_offsets[i] = i & 1 ? b : a;
+  const FramePlan plan = plan_of(test_pass(false));
+  const Rendered r = run(plan, ctx, {2, 16, true});
+  int at_max = 0, at_min = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const auto colour = [&](glm::vec2 o) {
+        return hashed(primary_ray_dir(ctx.camera, float(x) + o.x, float(y) + o.y, w, h));
+      };
+      const bool differ = colour(a) != colour(b);
+      const int n = r.counts[size_t(y) * w + x];
+      EXPECT_EQ(n, differ ? 12 : 2) << x << "," << y;
+      (differ ? at_max : at_min) += 1;
+      EXPECT_EQ(r.image.at(x, y)[0], differ ? 0.5f : colour(a).x) << x << "," << y;
+    }
+  EXPECT_GT(at_max, w * h / 4);
+  EXPECT_GT(at_min, w * h / 4);
+  expect_every_way_gives(plan, ctx, r, "two offsets");
+}
+
+FrameContext scene_context(const SceneInfo& info, int samples, AdaptiveSampling a) {
+  FrameContext ctx;
+  ctx.width = 29;  // not a multiple of the tile size or of eight lanes
+  ctx.height = 17;
+  ctx.samples = samples;
+  ctx.adaptive = a;
+  ctx.scene_time = ctx.video_time = 2.0;
+  ctx.pose = info.default_camera;
+  ctx.params = ParamValues(&info.params);
+  finish_frame_context(ctx);
+  return ctx;
+}
+
+TEST(AdaptiveSampling, ThresholdZeroGivesTheBitsOfFixedMaximum) {
+  for (const SceneInfo& info : all_scenes()) {
+    std::unique_ptr<Scene> scene = info.make();
+    const FrameContext fixed = scene_context(info, 5, {});
+    const FrameContext adaptive = scene_context(info, 1, {true, 2, 5, 0.0f});
+    scene->prepare(fixed);
+    const Rendered f = run(scene->frame_plan(fixed), fixed, {2, 16, true});
+    scene->prepare(adaptive);
+    const Rendered a = run(scene->frame_plan(adaptive), adaptive, {2, 16, true});
+    EXPECT_EQ(a.image.pixels, f.image.pixels) << info.name;
+    EXPECT_EQ(a.counts, SampleCounts(29 * 17, 5)) << info.name;
+  }
+}
+
+TEST(AdaptiveSampling, ScenesGiveTheSameBitsEveryWay) {
+  for (const SceneInfo& info : all_scenes()) {
+    std::unique_ptr<Scene> scene = info.make();
+    const FrameContext ctx = scene_context(info, 1, {true, 2, 10, 0.01f});
+    scene->prepare(ctx);
+    const FramePlan plan = scene->frame_plan(ctx);
+    const Rendered r = run(plan, ctx, {2, 16, true});
+    int stopped_early = 0;
+    for (uint16_t n : r.counts) stopped_early += n < 10;
+    EXPECT_GT(stopped_early, 0) << info.name;
+    expect_every_way_gives(plan, ctx, r, info.name);
+  }
+}
+
+}  // namespace
+}  // namespace sdfreel
