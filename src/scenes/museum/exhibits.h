@@ -3,9 +3,9 @@
 // targets) to the frame plan, drawn with a model transform from exhibit space (origin at the
 // centre of the plinth top, +Y up, metres) to the world, into the hall's colour and depth targets
 // (so the depth test composites it with the hall). Exhibit 1 is the sdf_morph object; plinths 2
-// and 3 wait for issue 13's lenticular card and fur, which plug in here through the same
-// signature; exhibit 4 (crepuscular rays) is the air of the whole hall (museum/atmosphere.h), and
-// its plinth stays bare in the sun by the window.
+// and 3 hold issue 13's lenticular card and fur (museum/card_exhibit.h, museum/fur_exhibit.h),
+// plugged in through ExhibitPasses; exhibit 4 (crepuscular rays) is the air of the whole hall
+// (museum/atmosphere.h), and its plinth stays bare in the sun by the window.
 #include <functional>
 #include <glm/glm.hpp>
 #include <string>
@@ -40,7 +40,7 @@ glm::mat4 exhibit_one_model(const FrameContext& ctx);
 glm::vec3 exhibit_one_centre(const FrameContext& ctx);
 
 // Appends every exhibit's passes, plinth by plinth; `extra[i]`, when set, hosts plinth i's
-// exhibit (the lead plugs issue 13's exhibits in here).
+// exhibit (MuseumScene::frame_plan sets the card and the fur here).
 void add_exhibit_passes(FramePlan& plan, const ExhibitStage& stage,
                         const ExhibitPasses extra[PLINTH_COUNT]);
 

@@ -7,8 +7,8 @@
 //   3. exhibits on their plinths (museum/exhibits.h): exhibit 1, the sdf_morph object ray-marched
 //      inside its bounding mesh, composited by depth, reflecting a probe of the hall taken from its
 //      centre in prepare() (museum/probe.h); exhibit 2, the lenticular card, on the second plinth
-//      (museum/card_exhibit.h: the card's own ray pass, depth tested and written); plinth 3 ready
-//      for the fur;
+//      (museum/card_exhibit.h: the card's own ray pass, depth tested and written); exhibit 3, the
+//      fur case, on the third (museum/fur_exhibit.h: its mesh passes, scaled onto the plinth);
 //   4. exhibit 4, the air: occlusion from depth -> crepuscular rays -> composite with fog
 //      (museum/atmosphere.h).
 //
@@ -31,6 +31,7 @@
 #include "scenes/museum/atmosphere.h"
 #include "scenes/museum/card_exhibit.h"
 #include "scenes/museum/exhibits.h"
+#include "scenes/museum/fur_exhibit.h"
 #include "scenes/museum/meshes.h"
 #include "scenes/scene.h"
 
@@ -134,6 +135,7 @@ class MuseumScene : public Scene {
     const ExhibitStage stage{ctx, cam, light, HALL_TARGET, DEPTH_TARGET, probe_.get()};
     ExhibitPasses extra[PLINTH_COUNT];
     extra[CARD_PLINTH] = card_exhibit(*prints_);
+    extra[FUR_PLINTH] = fur_exhibit();
     add_exhibit_passes(plan, stage, extra);
     if (ids) {
       plan.passes.push_back(copy_pass(HALL_TARGET, COLOUR_TARGET));
@@ -173,9 +175,10 @@ SceneInfo museum_scene_info() {
       "ceiling, a tall window the low sun shines through, a door, a bench, four plinths, "
       "pictures and labels. Exhibit 1 is the sdf_morph object, ray-marched inside its bounding "
       "box and composited with the hall by depth; exhibit 2 is the lenticular card (the scene "
-      "lenticular_card's ray pass, depth tested against the hall); exhibit 4 is the light "
-      "itself: crepuscular rays (GPU Gems 3, ch. 13) from the window's sky and a distance fog. "
-      "Plinth 3 waits for the fur.";
+      "lenticular_card's ray pass, depth tested against the hall); exhibit 3 is the fur case "
+      "(the scene fur's shell-textured shapes, pushed and bouncing, as meshes); exhibit 4 is the "
+      "light itself: crepuscular rays (GPU Gems 3, ch. 13) from the window's sky and a distance "
+      "fog.";
   info.params = museum::params();
   info.default_camera = CameraPose{{3.5, 1.5, -2.2}, {-4.0, 1.9, 0.0}, 55.0, 0.0};
   info.test_poses = museum::test_poses();

@@ -1,0 +1,17 @@
+#pragma once
+// Exhibit 3 on the third plinth: the fur case (scenes/fur/exhibit.h), scaled down to stand on the
+// plinth top with its open side towards the hall's middle, its mesh passes drawn into the hall's
+// colour and depth targets. The shapes are pushed at the fur scene's default push times.
+#include "scenes/museum/exhibits.h"
+
+namespace sdfreel::museum {
+
+constexpr int FUR_PLINTH = 2;
+
+// The case's pose in exhibit space (plinth top at the origin).
+glm::mat4 fur_case_pose();
+
+// The fur's passes for the plinth's ExhibitPasses slot.
+ExhibitPasses fur_exhibit();
+
+}  // namespace sdfreel::museum
