@@ -8,28 +8,6 @@
 
 namespace sdfreel::test {
 
-ImageRGB16 display_values(const ImageRGBA& linear) {
-  ImageRGB16 out(linear.width, linear.height);
-  for (size_t i = 0, o = 0; i < linear.pixels.size(); i += 4)
-    for (int c = 0; c < 3; ++c) {
-      const double v = std::clamp(double(linear.pixels[i + size_t(c)]), 0.0, 1.0);
-      out.pixels[o++] = uint16_t(std::lround(std::pow(v, 1.0 / 2.2) * 65535.0));
-    }
-  return out;
-}
-
-double share_over(const ImageRGB16& a, const ImageRGB16& b, double limit_255) {
-  size_t over = 0;
-  for (size_t i = 0; i < a.pixels.size(); i += 3) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c)
-      worst =
-          std::max(worst, std::abs(int(a.pixels[i + size_t(c)]) - int(b.pixels[i + size_t(c)])));
-    over += worst * (255.0 / 65535.0) > limit_255;
-  }
-  return double(over) / double(a.pixels.size() / 3);
-}
-
 DisplayDifference compare_display(const ImageRGB16& a, const ImageRGB16& b) {
   if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size() ||
       a.pixels.empty())

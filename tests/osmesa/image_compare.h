@@ -17,16 +17,6 @@ struct DisplayDifference {
 
 DisplayDifference compare_display(const ImageRGB16& a, const ImageRGB16& b);
 
-// Filament's rule for rasterised passes: at most 0.1% of pixels off by more than 5/255, mean
-// below 0.5/255 (display values).
-constexpr double FILAMENT_MAX_SHARE_OVER_5 = 0.001;
-constexpr double FILAMENT_MAX_MEAN = 0.5;
-
-// Display values for the comparison: clamp, sRGB-like 1/2.2 power, 16 bits.
-ImageRGB16 display_values(const ImageRGBA& linear);
-// The share of pixels whose largest channel difference exceeds limit_255 (in 1/255).
-double share_over(const ImageRGB16& a, const ImageRGB16& b, double limit_255);
-
 // |a - b| per channel, scaled by `gain` and clamped: a picture of where the backends disagree.
 ImageRGB16 difference_image(const ImageRGB16& a, const ImageRGB16& b, double gain);
 
