@@ -8,16 +8,6 @@
 
 namespace sdfreel::test {
 
-ImageRGB16 display_values(const ImageRGBA& linear) {
-  ImageRGB16 out(linear.width, linear.height);
-  for (size_t i = 0, o = 0; i < linear.pixels.size(); i += 4)
-    for (int c = 0; c < 3; ++c) {
-      const double v = std::clamp(double(linear.pixels[i + size_t(c)]), 0.0, 1.0);
-      out.pixels[o++] = uint16_t(std::lround(std::pow(v, 1.0 / 2.2) * 65535.0));
-    }
-  return out;
-}
-
 DisplayDifference compare_display(const ImageRGB16& a, const ImageRGB16& b) {
   if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size() ||
       a.pixels.empty())

@@ -17,10 +17,6 @@ struct DisplayDifference {
 
 DisplayDifference compare_display(const ImageRGB16& a, const ImageRGB16& b);
 
-// Display values for the comparison: clamp, sRGB-like 1/2.2 power, 16 bits.
-ImageRGB16 display_values(const ImageRGBA& linear);
-// Filament's rule (its limits and share_over) lives in osmesa/filament_rule.h.
-
 // |a - b| per channel, scaled by `gain` and clamped: a picture of where the backends disagree.
 ImageRGB16 difference_image(const ImageRGB16& a, const ImageRGB16& b, double gain);
 
