@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/camera_model.h"
+#include "render/unit_cube.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::test {
@@ -40,27 +41,6 @@ bool shade_ray(const Ray& ray, const glm::vec3& forward, RayStats& stats, glm::v
   return false;
 }
 
-// A unit cube centred at the origin, 24 vertices with face normals, counter-clockwise outside.
-std::shared_ptr<TriangleMesh> cube() {
-  auto m = std::make_shared<TriangleMesh>();
-  const glm::vec3 normals[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-  for (const glm::vec3& n : normals) {
-    const glm::vec3 u = std::abs(n.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    const glm::vec3 v = glm::cross(n, u);
-    const unsigned base = unsigned(m->positions.size() / 3);
-    for (const glm::vec2 c :
-         {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-      const glm::vec3 p = (n + u * c.x + v * c.y) * 0.5f;
-      m->positions.insert(m->positions.end(), {p.x, p.y, p.z});
-      m->normals.insert(m->normals.end(), {n.x, n.y, n.z});
-    }
-    // u x v = n: (u, v) counter-clockwise seen from outside.
-    m->indices.insert(m->indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-  }
-  return m;
-}
-
 MeshInstance box(const glm::vec3& centre, const glm::vec3& size, const glm::vec3& colour) {
   return {glm::scale(glm::translate(glm::mat4(1.0f), centre), size), glm::vec4(colour, 1.0f)};
 }
@@ -68,7 +48,7 @@ MeshInstance box(const glm::vec3& centre, const glm::vec3& size, const glm::vec3
 }  // namespace
 
 FramePlan mixed_plan(const FrameContext& ctx) {
-  static const std::shared_ptr<const TriangleMesh> mesh = cube();
+  static const std::shared_ptr<const TriangleMesh> mesh = unit_cube();
   FramePlan plan;
   MeshPass cubes;
   cubes.name = "cubes";
