@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "scenes/common/uniform_list.h"
+#include "scenes/common/march_uniforms.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::sdf_morph {
@@ -68,16 +68,7 @@ MorphUniforms make_morph_uniforms(const FrameContext& ctx) {
   u.shadow_k = dm::max(float(pv.scalar("shadow_softness")), MIN_SHADOW_K);
   u.env_intensity = float(pv.scalar("environment_intensity"));
   for (int i = 0; i < SOFTBOX_COUNT; ++i) u.boxes[i] = make_soft_box(SOFTBOX_SPECS[i]);
-  const MarchSettings& m = ctx.march;
-  u.max_steps = m.max_steps;
-  u.shadow_steps = m.shadow_steps;
-  u.reflect_steps = m.reflect_steps;
-  u.hit_eps = m.hit_eps;
-  u.step_factor = m.step_factor;
-  u.normal_eps = m.normal_eps;
-  u.max_dist = m.max_dist;
-  u.naive = m.naive;
-  u.hit_mask = m.hit_mask;
+  copy_march_settings(ctx.march, u);
   return u;
 }
 
@@ -90,16 +81,8 @@ std::vector<ShaderUniform> morph_shader_uniforms(const MorphUniforms& u) {
       .f("reflectivity", u.reflectivity)
       .f("key_intensity", u.key_intensity)
       .f("shadow_k", u.shadow_k)
-      .f("env_intensity", u.env_intensity)
-      .f("max_steps", float(u.max_steps))
-      .f("shadow_steps", float(u.shadow_steps))
-      .f("reflect_steps", float(u.reflect_steps))
-      .f("hit_eps", u.hit_eps)
-      .f("step_factor", u.step_factor)
-      .f("normal_eps", u.normal_eps)
-      .f("max_dist", u.max_dist)
-      .flag("naive", u.naive)
-      .flag("hit_mask", u.hit_mask);
+      .f("env_intensity", u.env_intensity);
+  add_march_uniforms(list, u);
   std::vector<ShaderUniform> all = list.uniforms();
   for (int i = 0; i < SOFTBOX_COUNT; ++i) {
     const SoftBox& b = u.boxes[i];

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "scenes/common/march_uniforms.h"
 #include "scenes/water_lily/geometry.h"
 #include "sdf/det_math.h"
 
@@ -83,66 +84,38 @@ LilyUniforms make_lily_uniforms(const FrameContext& ctx) {
   u.inv_tan_half_fov = 1.0f / ctx.camera.tan_half_fov;
   u.inv_aspect = float(ctx.height) / float(ctx.width);
 
-  const MarchSettings& m = ctx.march;
-  u.max_steps = m.max_steps;
-  u.shadow_steps = m.shadow_steps;
-  u.reflect_steps = m.reflect_steps;
-  u.hit_eps = m.hit_eps;
-  u.step_factor = m.step_factor;
-  u.normal_eps = m.normal_eps;
-  u.max_dist = m.max_dist;
-  u.naive = m.naive;
-  u.hit_mask = m.hit_mask;
+  copy_march_settings(ctx.march, u);
   return u;
 }
 
 std::vector<ShaderUniform> lily_shader_uniforms(const LilyUniforms& u) {
-  const auto f = [](const std::string& name, float v) {
-    return ShaderUniform{"u_lily." + name, 1, {v}};
-  };
-  const auto v2 = [](const std::string& name, const glm::vec2& v) {
-    return ShaderUniform{"u_lily." + name, 2, {v.x, v.y}};
-  };
-  const auto v3 = [](const std::string& name, const glm::vec3& v) {
-    return ShaderUniform{"u_lily." + name, 3, {v.x, v.y, v.z}};
-  };
-  const auto array = [](const std::string& name, const float* v, int n) {
-    return ShaderUniform{"u_lily." + name, 1, std::vector<float>(v, v + n)};
-  };
-  return {
-      array("curl", u.curl, FLOWER_COUNT),
-      array("petal_lipschitz", u.petal_lipschitz, PETAL_LAYERS),
-      array("leaf_lipschitz", u.leaf_lipschitz, LEAF_COUNT),
-      v2("drift_offset", u.drift_offset),
-      f("water_time_a", u.water_time_a),
-      f("water_time_b", u.water_time_b),
-      f("water_blend", u.water_blend),
-      f("cloud_shift", u.cloud_shift),
-      v3("sun_dir", u.sun_dir),
-      v3("sun_color", u.sun_color),
-      v3("fill_dir", u.fill_dir),
-      f("water_bump", u.water_bump),
-      f("translucency", u.translucency),
-      f("contrast", u.contrast),
-      f("saturation", u.saturation),
-      f("vignette", u.vignette),
-      f("fog_distance", u.fog_distance),
-      f("shadow_k", u.shadow_k),
-      v3("cam_right", u.cam_right),
-      v3("cam_up", u.cam_up),
-      v3("cam_forward", u.cam_forward),
-      f("inv_tan_half_fov", u.inv_tan_half_fov),
-      f("inv_aspect", u.inv_aspect),
-      f("max_steps", float(u.max_steps)),
-      f("shadow_steps", float(u.shadow_steps)),
-      f("reflect_steps", float(u.reflect_steps)),
-      f("hit_eps", u.hit_eps),
-      f("step_factor", u.step_factor),
-      f("normal_eps", u.normal_eps),
-      f("max_dist", u.max_dist),
-      f("naive", u.naive ? 1.0f : 0.0f),
-      f("hit_mask", u.hit_mask ? 1.0f : 0.0f),
-  };
+  const auto array = [](const float* v, int n) { return std::vector<float>(v, v + n); };
+  UniformList list("u_lily");
+  list.add("curl", 1, array(u.curl, FLOWER_COUNT))
+      .add("petal_lipschitz", 1, array(u.petal_lipschitz, PETAL_LAYERS))
+      .add("leaf_lipschitz", 1, array(u.leaf_lipschitz, LEAF_COUNT))
+      .v2("drift_offset", u.drift_offset)
+      .f("water_time_a", u.water_time_a)
+      .f("water_time_b", u.water_time_b)
+      .f("water_blend", u.water_blend)
+      .f("cloud_shift", u.cloud_shift)
+      .v3("sun_dir", u.sun_dir)
+      .v3("sun_color", u.sun_color)
+      .v3("fill_dir", u.fill_dir)
+      .f("water_bump", u.water_bump)
+      .f("translucency", u.translucency)
+      .f("contrast", u.contrast)
+      .f("saturation", u.saturation)
+      .f("vignette", u.vignette)
+      .f("fog_distance", u.fog_distance)
+      .f("shadow_k", u.shadow_k)
+      .v3("cam_right", u.cam_right)
+      .v3("cam_up", u.cam_up)
+      .v3("cam_forward", u.cam_forward)
+      .f("inv_tan_half_fov", u.inv_tan_half_fov)
+      .f("inv_aspect", u.inv_aspect);
+  add_march_uniforms(list, u);
+  return list.uniforms();
 }
 
 }  // namespace sdfreel::water_lily
