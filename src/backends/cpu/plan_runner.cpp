@@ -21,6 +21,15 @@ void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum) {
 
 }  // namespace
 
+void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats) {
+  if (const auto* ray = std::get_if<RayPass>(&pass))
+    run_ray_pass(*ray, pc, targets, stats);
+  else if (const auto* mesh = std::get_if<MeshPass>(&pass))
+    run_mesh_pass(*mesh, pc, targets);
+  else
+    run_image_pass(std::get<ImagePass>(pass), pc, targets);
+}
+
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
                        RayStats& stats, SampleCounts* counts) {
   CpuPassContext pc{
@@ -44,14 +53,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     if (live.round_ends_at(i) && live.decide(i, sum, sum_odd) == 0) break;
     pc.offset = ctx.sample_offsets[size_t(i)];
     targets.clear();
-    for (const Pass& pass : plan.passes) {
-      if (const auto* ray = std::get_if<RayPass>(&pass))
-        run_ray_pass(*ray, pc, targets, stats);
-      else if (const auto* mesh = std::get_if<MeshPass>(&pass))
-        run_mesh_pass(*mesh, pc, targets);
-      else
-        run_image_pass(std::get<ImagePass>(pass), pc, targets);
-    }
+    for (const Pass& pass : plan.passes) run_pass(pass, pc, targets, stats);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
     add_live(colour, live, sum);
     if (i & 1) add_live(colour, live, sum_odd);

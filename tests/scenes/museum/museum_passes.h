@@ -5,9 +5,7 @@
 #include <set>
 #include <string>
 
-#include "backends/cpu/cpu_image_pass.h"
-#include "backends/cpu/cpu_mesh_pass.h"
-#include "backends/cpu/cpu_ray_pass.h"
+#include "backends/cpu/plan_runner.h"
 #include "scenes/registry.h"
 
 namespace sdfreel::test {
@@ -32,15 +30,8 @@ inline MuseumTargets run_museum_passes(const FrameContext& ctx,
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   targets.clear();
   RayStats stats;
-  for (const Pass& pass : plan.passes) {
-    if (!names.count(pass_name(pass))) continue;
-    if (const auto* ray = std::get_if<RayPass>(&pass))
-      run_ray_pass(*ray, pc, targets, stats);
-    else if (const auto* mesh = std::get_if<MeshPass>(&pass))
-      run_mesh_pass(*mesh, pc, targets);
-    else
-      run_image_pass(std::get<ImagePass>(pass), pc, targets);
-  }
+  for (const Pass& pass : plan.passes)
+    if (names.count(pass_name(pass))) run_pass(pass, pc, targets, stats);
   return {targets.get("hall", "test"), targets.get(DEPTH_TARGET, "test")};
 }
 
