@@ -37,11 +37,11 @@ std::array<FurLook, BODY_COUNT> ExhibitParams::default_looks() {
   return {sphere, cube, torus};
 }
 
-std::vector<ParamSpec> exhibit_param_specs() {
+std::vector<ParamSpec> exhibit_param_specs(const std::string& prefix) {
   const ExhibitParams d;
   std::vector<ParamSpec> out;
   for (int i = 0; i < BODY_COUNT; ++i) {
-    const std::string p = std::string(FUR_PREFIXES[i]) + "_";
+    const std::string p = prefix + FUR_PREFIXES[i] + "_";
     const FurLook& l = d.looks[size_t(i)];
     out.push_back(scalar_param(p + "length", l.length, 0.0, 0.3,
                                "fur length: extrusion of the outermost shell, metres"));
@@ -59,27 +59,27 @@ std::vector<ParamSpec> exhibit_param_specs() {
                                "shell count N (rounded to an integer); more = finer strands"));
   }
   const PhysicsInputs& ph = d.physics;
-  out.push_back(vector_param("push_times", {ph.push_times[0], ph.push_times[1], ph.push_times[2]},
-                             -1.0, 1e7,
+  out.push_back(vector_param(prefix + "push_times",
+                             {ph.push_times[0], ph.push_times[1], ph.push_times[2]}, -1.0, 1e7,
                              "TIME of up to three pushes that make the shapes jump; negative = "
                              "none (key with step interpolation to schedule them)"));
-  out.push_back(scalar_param("push_strength", ph.push_strength, 0.0, 3.0,
+  out.push_back(scalar_param(prefix + "push_strength", ph.push_strength, 0.0, 3.0,
                              "scale of the pushes' speeds (1: about 30 cm high)"));
-  out.push_back(scalar_param("grow_amount", ph.grow_amount, 0.0, 0.5,
+  out.push_back(scalar_param(prefix + "grow_amount", ph.grow_amount, 0.0, 0.5,
                              "the sphere grows and shrinks by this fraction of its size"));
-  out.push_back(scalar_param("grow_period", ph.grow_period, 0.5, 600.0,
+  out.push_back(scalar_param(prefix + "grow_period", ph.grow_period, 0.5, 600.0,
                              "seconds for the sphere to grow and shrink once"));
-  out.push_back(scalar_param("displacement_strength", d.displacement_strength, 0.0, 2.0,
+  out.push_back(scalar_param(prefix + "displacement_strength", d.displacement_strength, 0.0, 2.0,
                              "how far the fur tips follow the spring's lag (0: stiff fur)"));
-  out.push_back(
-      scalar_param("light_intensity", d.light_intensity, 0.0, 10.0, "intensity of the key light"));
+  out.push_back(scalar_param(prefix + "light_intensity", d.light_intensity, 0.0, 10.0,
+                             "intensity of the key light"));
   return out;
 }
 
-ExhibitParams read_exhibit_params(const ParamValues& v) {
+ExhibitParams read_exhibit_params(const ParamValues& v, const std::string& prefix) {
   ExhibitParams e;
   for (int i = 0; i < BODY_COUNT; ++i) {
-    const std::string p = std::string(FUR_PREFIXES[i]) + "_";
+    const std::string p = prefix + FUR_PREFIXES[i] + "_";
     FurLook& l = e.looks[size_t(i)];
     l.length = v.scalar(p + "length");
     l.density = v.scalar(p + "density");
@@ -89,13 +89,13 @@ ExhibitParams read_exhibit_params(const ParamValues& v) {
     l.tip_color = glm::dvec3(v.vec3(p + "tip_color"));
     l.shells = v.scalar(p + "shells");
   }
-  const std::vector<double>& pushes = v.raw("push_times");
+  const std::vector<double>& pushes = v.raw(prefix + "push_times");
   for (size_t i = 0; i < 3; ++i) e.physics.push_times[i] = pushes[i];
-  e.physics.push_strength = v.scalar("push_strength");
-  e.physics.grow_amount = v.scalar("grow_amount");
-  e.physics.grow_period = v.scalar("grow_period");
-  e.displacement_strength = v.scalar("displacement_strength");
-  e.light_intensity = v.scalar("light_intensity");
+  e.physics.push_strength = v.scalar(prefix + "push_strength");
+  e.physics.grow_amount = v.scalar(prefix + "grow_amount");
+  e.physics.grow_period = v.scalar(prefix + "grow_period");
+  e.displacement_strength = v.scalar(prefix + "displacement_strength");
+  e.light_intensity = v.scalar(prefix + "light_intensity");
   return e;
 }
 

@@ -32,7 +32,8 @@ struct ExhibitParams {
 
 constexpr const char* FUR_PREFIXES[BODY_COUNT] = {"sphere", "cube", "torus"};
 
-std::vector<ParamSpec> exhibit_param_specs();
-ExhibitParams read_exhibit_params(const ParamValues& v);
+// The parameters' names start with `prefix` (the museum names its exhibit's `fur_...`).
+std::vector<ParamSpec> exhibit_param_specs(const std::string& prefix = "");
+ExhibitParams read_exhibit_params(const ParamValues& v, const std::string& prefix = "");
 
 }  // namespace sdfreel::fur

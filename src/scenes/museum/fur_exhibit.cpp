@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "scenes/fur/exhibit.h"
+#include "scenes/fur/exhibit_params.h"
 
 namespace sdfreel::museum {
 namespace {
@@ -22,7 +23,7 @@ glm::mat4 fur_case_pose() {
 
 ExhibitPasses fur_exhibit() {
   return [](FramePlan& plan, const glm::mat4& top, const ExhibitStage& stage) {
-    fur::ExhibitParams p;
+    fur::ExhibitParams p = fur::read_exhibit_params(stage.frame.params, FUR_PARAM_PREFIX);
     p.hit_mask = stage.frame.march.hit_mask;
     const size_t first = plan.passes.size();
     fur::add_exhibit_passes(plan, top * fur_case_pose(), p, stage.frame.scene_time);

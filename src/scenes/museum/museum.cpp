@@ -28,6 +28,7 @@
 #include "io/cache_file.h"
 #include "render/camera_model.h"
 #include "scenes/common/param.h"
+#include "scenes/fur/exhibit_params.h"
 #include "scenes/museum/atmosphere.h"
 #include "scenes/museum/card_exhibit.h"
 #include "scenes/museum/exhibits.h"
@@ -57,6 +58,7 @@ std::vector<ParamSpec> params() {
       scalar_param("exhibit_scale", 0.65, 0.05, 3.0, "exhibit 1's size (1 = sdf_morph's object)"),
   };
   for (const ParamSpec& s : sdf_morph_scene_info().params) p.push_back(s);
+  for (const ParamSpec& s : fur::exhibit_param_specs(FUR_PARAM_PREFIX)) p.push_back(s);
   return p;
 }
 

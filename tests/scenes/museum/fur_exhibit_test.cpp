@@ -1,0 +1,44 @@
+// Exhibit 3 in the hall (issue 13): the museum schedules the fur's pushes with its own
+// parameters (fur_push_times), and the case's frames stay pure functions of TIME.
+#include "scenes/museum/fur_exhibit.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "scenes/museum/museum_passes.h"
+#include "scenes/registry.h"
+#include "scenes/scene_pixels.h"
+
+namespace sdfreel {
+namespace {
+
+constexpr int W = 96, H = 54;
+// Beside plinth 3, looking down into the fur case.
+const CameraPose AT_THE_CASE{{3.0, 1.5, -0.6}, {1.8, 1.1, -1.7}, 40.0, 0.0};
+
+ImageRGBA hall_at(double time, double push_time) {
+  FrameContext ctx = test::scene_context(*find_scene("museum"), W, H, time, Quality::Final);
+  ctx.pose = AT_THE_CASE;
+  ctx.params.set("fur_push_times", {push_time, -1.0, -1.0});
+  finish_frame_context(ctx);
+  std::unique_ptr<Scene> scene = find_scene("museum")->make();
+  scene->prepare(ctx);
+  std::set<std::string> all;
+  for (const Pass& pass : scene->frame_plan(ctx).passes) all.insert(pass_name(pass));
+  return test::run_museum_passes(ctx, all).colour;
+}
+
+bool same(const ImageRGBA& a, const ImageRGBA& b) {
+  return std::memcmp(a.at(0, 0), b.at(0, 0), sizeof(float) * 4 * W * H) == 0;
+}
+
+TEST(MuseumFur, PushTimesComeFromTheMuseumsOwnParameters) {
+  const double push = 2.0;
+  // Before the push the case is as if never pushed; after it the shapes are in the air.
+  EXPECT_TRUE(same(hall_at(1.9, push), hall_at(1.9, -1.0)));
+  EXPECT_FALSE(same(hall_at(2.3, push), hall_at(2.3, -1.0)));
+}
+
+}  // namespace
+}  // namespace sdfreel
