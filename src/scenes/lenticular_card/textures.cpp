@@ -63,8 +63,8 @@ const CardPrints& default_card_prints() {
   static std::once_flag once;
   static CardPrints prints;
   std::call_once(once, [] {
-    ViewSet lanterns{"lantern_festival", 16, 64, 48, 2, 4.0, 24.0, 1.0};
-    ViewSet morph{"sdf_morph", 16, 64, 48, 2, 1.5, 24.0, 1.6};
+    ViewSet lanterns{"lantern_festival", 16, 192, 144, 2, 4.0, 24.0, 1.0};
+    ViewSet morph{"sdf_morph", 16, 192, 144, 2, 1.5, 24.0, 1.6};
     prints = make_card_prints(source_views(lanterns), source_views(morph));
   });
   return prints;

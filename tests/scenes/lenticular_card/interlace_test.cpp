@@ -33,11 +33,11 @@ void expect_round_trip(const InterlaceLayout& layout, int w, int h) {
 }
 
 TEST(Interlace, RoundTripGivesBackEveryView) {
-  expect_round_trip(InterlaceLayout{16, 16.0, false}, 64, 48);  // the scene's print
-  expect_round_trip(print_layout(16, 40.0, 720.0), 20, 12);     // 18 pixels a lens
-  expect_round_trip(print_layout(9, 62.0, 600.0), 31, 7);       // 9.677...: strips of 1 or 2
-  expect_round_trip(print_layout(2, 75.0, 150.0), 5, 3);        // exactly one pixel a strip
-  expect_round_trip(print_layout(7, 3.0, 100.0), 4, 4);         // 33.3 pixels a lens
+  expect_round_trip(InterlaceLayout{16, 16.0, false}, 192, 144);  // the scene's print
+  expect_round_trip(print_layout(16, 40.0, 720.0), 20, 12);       // 18 pixels a lens
+  expect_round_trip(print_layout(9, 62.0, 600.0), 31, 7);         // 9.677...: strips of 1 or 2
+  expect_round_trip(print_layout(2, 75.0, 150.0), 5, 3);          // exactly one pixel a strip
+  expect_round_trip(print_layout(7, 3.0, 100.0), 4, 4);           // 33.3 pixels a lens
 }
 
 TEST(Interlace, EveryViewAppearsUnderEveryLensInReverseOrder) {
