@@ -25,7 +25,8 @@ namespace {
 
 const glm::vec3 BACKGROUND(0.018f, 0.02f, 0.025f);
 constexpr float PLINTH_TOP = 0.9f;
-constexpr float CASE_FLOOR = 0.04f;  // the case's floor slab stands on the plinth
+constexpr float CASE_FLOOR = 0.04f;   // the case's floor slab stands on the plinth
+constexpr float NEAR_PLANE = 0.004f;  // depth is 32-bit float: 0.1 mm steps at 3 m
 
 class FurScene : public Scene {
  public:
@@ -42,6 +43,9 @@ class FurScene : public Scene {
   }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan = Scene::frame_plan(ctx);  // the background
+    // Close enough to the fur to stand in it (the outer shell is 2.5-7 cm from the skin): the
+    // default 5 cm near plane would cut the skin away and show the case through the shape.
+    plan.near_plane = NEAR_PLANE;
     const glm::mat4 model =
         glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, PLINTH_TOP + CASE_FLOOR, 0.0f));
     const fur::CaseLook look = fur::exhibit_look(model, params_, pose_);
