@@ -12,6 +12,7 @@ struct CardUniforms {
   float gloss, ridge_noise;
   float lenses, views, view_height;
   int hit_mask;  // MarchSettings::hit_mask (0 or 1)
+  float hit_id_base;  // added to the ids
 };
 uniform CardUniforms u_card;
 uniform sampler2D u_card_print;   // RGBA: the two interlaced prints, linear albedo, stacked
@@ -145,7 +146,7 @@ bool shadeCard(Ray ray, out vec3 colour, out float t) {
   precise vec3 n = vec3(0.0);
   n[axis] = d[axis] < 0.0 ? 1.0 : -1.0;
   if (u_card.hit_mask != 0) {
-    colour = vec3(on_card ? HIT_ID_CARD : HIT_ID_STAND);
+    colour = vec3(u_card.hit_id_base + (on_card ? HIT_ID_CARD : HIT_ID_STAND));
   } else if (!on_card) {
     colour = matte(WOOD, n, u_card.light);
   } else if (axis == 2 && n.z > 0.0) {

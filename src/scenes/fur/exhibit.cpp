@@ -67,7 +67,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   look.base = glm::vec3(fur.base_color);
   look.tip = glm::vec3(fur.tip_color);
   look.light_dir = light.light_dir, look.light = light.light, look.ambient = light.ambient;
-  if (p.hit_mask) look.hit_id = float(int(body.shape) + 1);
+  if (p.hit_mask) look.hit_id = p.hit_id_base + float(int(body.shape) + 1);
   pass.vertex = "fur/shell.vert";
   pass.fragment = "fur/shell.glsl";
   pass.alpha_cutoff = 0.5f;

@@ -26,7 +26,8 @@ struct ExhibitParams {
   PhysicsInputs physics{};
   double displacement_strength = 0.35;  // scales the spring's lag on the tips
   double light_intensity = 1.6;         // the key light
-  bool hit_mask = false;  // MarchSettings::hit_mask: colour = hit id (0, or 1 + shape index)
+  bool hit_mask = false;     // MarchSettings::hit_mask: colour = hit id (0, or 1 + shape index)
+  float hit_id_base = 0.0f;  // added to the shapes' ids (a host scene keeps its own apart)
   static std::array<FurLook, BODY_COUNT> default_looks();
 };
 

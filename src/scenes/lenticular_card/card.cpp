@@ -126,7 +126,7 @@ bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, v
   vec3 n(0.0f);
   n[axis] = d[axis] < 0.0f ? 1.0f : -1.0f;
   if (u.hit_mask) {
-    colour = vec3(on_card ? HIT_ID_CARD : HIT_ID_STAND);
+    colour = vec3(u.hit_id_base + (on_card ? HIT_ID_CARD : HIT_ID_STAND));
   } else if (!on_card) {
     colour = matte(WOOD, n, u.light);
   } else if (axis == 2 && n.z > 0.0f) {

@@ -24,7 +24,8 @@ struct CardUniforms {
   float ior = 1.56f, thickness = 1.5f;  // sheet: index of refraction, thickness / lens pitch
   float gloss = 1.0f, ridge_noise = 0.1f;
   int lenses = 64, views = 16, view_height = 48;  // the print's layout (textures.h)
-  bool hit_mask = false;  // MarchSettings::hit_mask: ids instead of colours (card 1, stand 2)
+  bool hit_mask = false;     // MarchSettings::hit_mask: ids instead of colours (card 1, stand 2)
+  float hit_id_base = 0.0f;  // added to those ids (a host scene keeps its own ids apart)
 };
 
 // The textures the card reads: the interlaced prints (linear albedo) and the ridge normal map.

@@ -32,6 +32,7 @@ CardUniforms card_uniforms(const glm::mat4& model, const CardPrints& prints, con
   u.lenses = prints.lenses;
   u.views = prints.views;
   u.view_height = prints.view_height;
+  u.hit_id_base = look.hit_id_base;
   return u;
 }
 
@@ -50,7 +51,8 @@ std::vector<ShaderUniform> card_shader_uniforms(const CardUniforms& u) {
       .f("lenses", float(u.lenses))
       .f("views", float(u.views))
       .f("view_height", float(u.view_height))
-      .flag("hit_mask", u.hit_mask);
+      .flag("hit_mask", u.hit_mask)
+      .f("hit_id_base", u.hit_id_base);
   return list.uniforms();
 }
 

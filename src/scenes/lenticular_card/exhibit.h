@@ -19,6 +19,7 @@ struct CardLook {
   glm::vec3 light_world = glm::vec3(-0.45f, 0.75f, 0.5f);  // toward the key light
   float ior = 1.56f, thickness = 1.5f, gloss = 1.0f, ridge_noise = 0.1f;
   double scroll_period = 6.0, scroll_hold = 0.7;  // seconds; share of the period held still
+  float hit_id_base = 0.0f;  // MarchSettings::hit_mask: the card's and stand's ids start above
 };
 
 // The card pass's constants at `time` (TIME, seconds) for an exhibit placed by `model`.

@@ -26,6 +26,7 @@ ExhibitPasses card_exhibit(const lenticular_card::CardPrints& prints) {
   return [&prints](FramePlan& plan, const glm::mat4& top, const ExhibitStage& stage) {
     lenticular_card::CardLook look;
     look.light_world = CARD_KEY_LIGHT;
+    look.hit_id_base = CARD_HIT_ID_BASE;
     const size_t first = plan.passes.size();
     lenticular_card::add_exhibit_passes(plan, top * card_pose(), prints, look, stage.frame);
     // The card's passes draw into the hall's targets, not the frame's.

@@ -9,6 +9,7 @@
 namespace sdfreel::museum {
 
 constexpr int CARD_PLINTH = 1;
+constexpr float CARD_HIT_ID_BASE = 2.0f;  // the card's and stand's hit ids are 3 and 4 (museum.cpp)
 
 // The card's pose in exhibit space (plinth top at the origin): turned about +y so its face looks
 // across the hall and a little down it, towards where the walkthrough passes.

@@ -8,6 +8,7 @@
 namespace sdfreel::museum {
 
 constexpr int FUR_PLINTH = 2;
+constexpr float FUR_HIT_ID_BASE = 4.0f;  // the shapes' hit ids are 5, 6, 7 (museum.cpp)
 constexpr const char* FUR_PARAM_PREFIX = "fur_";
 
 // The case's pose in exhibit space (plinth top at the origin).

@@ -44,8 +44,10 @@ namespace museum {
 namespace {
 
 constexpr const char* HALL_TARGET = "hall";
-// MarchSettings::hit_mask (the bench's per-surface errors): the frame holds these ids instead.
-constexpr float HIT_ID_SKY = 0.0f, HIT_ID_HALL = 2.0f;  // exhibit 1 is sdf_morph's HIT_ID_OBJECT
+// MarchSettings::hit_mask (the bench's per-surface errors): the frame holds these ids instead,
+// one per surface: exhibit 1 is sdf_morph's HIT_ID_OBJECT (1), the card and its stand 3 and 4
+// (card_exhibit.h), the fur's shapes 5 to 7 (fur_exhibit.h).
+constexpr float HIT_ID_SKY = 0.0f, HIT_ID_HALL = 2.0f;
 
 std::vector<ParamSpec> params() {
   std::vector<ParamSpec> p = {

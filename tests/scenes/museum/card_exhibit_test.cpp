@@ -71,6 +71,19 @@ TEST(MuseumCard, TheHallAndTheCardHideEachOtherByDepth) {
   EXPECT_GT(hidden, 10) << "the plinth's edge should hide the card's base";
 }
 
+// The bench's per-surface errors need one id per surface: the card (3) and its stand (4) are
+// not the hall (2) or exhibit 1 (1).
+TEST(MuseumCard, CardAndStandHaveHitIdsOfTheirOwn) {
+  FrameContext ctx = museum_context(BELOW_CARD);
+  ctx.march.hit_mask = true;
+  const test::MuseumTargets ids = test::run_museum_passes(ctx, {CARD});
+  std::set<float> seen;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (ids.depth.at(x, y)[0] < 1.0f) seen.insert(ids.colour.at(x, y)[0]);
+  EXPECT_EQ(seen, (std::set<float>{3.0f, 4.0f}));
+}
+
 TEST(MuseumCard, TexturesHoldThePrintsAndTheProbeUnderAKeyThatFollowsBoth) {
   const CameraPose pose = find_scene("museum")->default_camera;
   std::unique_ptr<Scene> a = find_scene("museum")->make();
