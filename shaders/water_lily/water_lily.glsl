@@ -67,36 +67,9 @@ float mapScene(vec3 p, bool leaves, LilyUniforms u, inout RayStats stats) {
   return mapNearest(p, u, BOUND_MARGIN, leaves).d;
 }
 
-float march(vec3 ro, vec3 rd, float tmin, float tmax, int max_steps, float eps_per_t,
-            float t_before, bool leaves, LilyUniforms u, inout RayStats stats) {
-  precise float t = tmin;
-  precise float omega = u.naive != 0 ? 1.0 : u.step_factor;
-  precise float prev_d = 0.0;
-  precise float step = 0.0;
-  for (int i = 0; i < max_steps; ++i) {
-    stats.steps += 1u;
-    precise float d = mapScene(ro + rd * t, leaves, u, stats);
-    if (omega > 1.0 && abs(d) + prev_d < step) {
-      t += prev_d - step;
-      step = prev_d;
-      omega = 1.0;
-      continue;
-    }
-    precise float eps = u.naive != 0 ? u.hit_eps : dm_max(MIN_HIT_EPS, eps_per_t * (t_before + t));
-    if (d < eps) return t;
-    step = d * omega;
-    prev_d = d;
-    t += step;
-    if (t > tmax) {
-      if (omega <= 1.0 || t - step + d > tmax) return NO_HIT;
-      t += d - step;
-      step = d;
-      omega = 1.0;
-    }
-  }
-  stats.capped += 1u;
-  return t;
-}
+#define RELAXED_MARCH_PARAMS bool leaves, LilyUniforms u
+#define RELAXED_MARCH_MAP(p) mapScene(p, leaves, u, stats)
+#include "common/relaxed_march.glsl"
 
 vec3 calcNormal(vec3 p, float e, bool leaves, LilyUniforms u, inout RayStats stats) {
   const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0),
