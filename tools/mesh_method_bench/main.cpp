@@ -7,7 +7,6 @@
 //   mesh_method_bench [--runs N] [--threads N] [--quality low|medium] [--cases hall,fur,museum]
 //                     [--sizes 320x180,1280x720] [--spp 1,2,4]
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +19,7 @@
 #include "bench_case.h"
 #include "embree_ids.h"
 #include "raster_ids.h"
+#include "timing.h"
 
 using namespace sdfreel;
 using namespace sdfreel::mesh_bench;
@@ -86,48 +86,57 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// Median wall time of `runs` calls, in milliseconds.
-double median_ms(int runs, const std::function<void()>& fn) {
-  std::vector<double> ms;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    fn();
-    ms.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
-}
-
 CaseSpec find_spec(const std::string& name) {
   for (const CaseSpec& s : standard_cases())
     if (s.name == name) return s;
   usage("unknown case " + name);
 }
 
+// Medians over interleaved rounds (every method once per round, after one untimed round), so a
+// change of load on a shared machine hits all methods alike.
+enum Step { VERTEX, SCENE, RASTER, BUILD, TRACE1, TRACE8, STEPS };
+
+std::vector<std::string> wall_rows;
+
 void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
   const BenchCase c = make_case(spec, w, h, spp);
   FlatTriangles flat = flatten(c);
-  const double vertex_ms = median_ms(o.runs, [&] { flat = flatten(c); });
   const RasterIds raster(c, flat);
   EmbreeIds embree(o.threads, o.quality);
   SampleHits scene_hits(0, 0, 0), raster_hits(0, 0, 0), ray1(0, 0, 0), ray8(0, 0, 0);
-  const double scene_ms = median_ms(o.runs, [&] { scene_hits = run_scene_passes(c, o.threads); });
-  const double raster_ms = median_ms(o.runs, [&] { raster_hits = raster.run(o.threads); });
-  const double build_ms = median_ms(o.runs, [&] { embree.build(c, flat); });
-  const double trace1_ms = median_ms(o.runs, [&] { ray1 = embree.trace(o.threads, false); });
-  const double trace8_ms = median_ms(o.runs, [&] { ray8 = embree.trace(o.threads, true); });
+  const std::function<void()> steps[STEPS] = {[&] { flat = flatten(c); },
+                                              [&] { scene_hits = run_scene_passes(c, o.threads); },
+                                              [&] { raster_hits = raster.run(o.threads); },
+                                              [&] { embree.build(c, flat); },
+                                              [&] { ray1 = embree.trace(o.threads, false); },
+                                              [&] { ray8 = embree.trace(o.threads, true); }};
+  std::vector<double> cpu[STEPS], wall[STEPS];
+  for (int r = -1; r < o.runs; ++r)
+    for (int k = 0; k < STEPS; ++k) {
+      const Elapsed e = time_call(steps[k]);
+      if (r < 0) continue;
+      cpu[k].push_back(e.cpu_ms);
+      wall[k].push_back(e.wall_ms);
+    }
+  double ms[STEPS], wall_ms[STEPS];
+  for (int k = 0; k < STEPS; ++k) ms[k] = median(cpu[k]), wall_ms[k] = median(wall[k]);
   const Agreement g = compare(raster_hits, ray1, c.camera);
   const Agreement packets = compare(ray1, ray8, c.camera);
-  const double embree_ms = build_ms + std::min(trace1_ms, trace8_ms);
+  const double embree_ms = ms[BUILD] + std::min(ms[TRACE1], ms[TRACE8]);
   std::printf(
-      "| %s | %dx%d | %d | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.4f%% | "
+      "| %s | %dx%d | %d | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f%% | "
       "%zu | %zu | %zu | %.1e | %s | %zu |\n",
-      c.name.c_str(), w, h, spp, flat.count(), vertex_ms, scene_ms, raster_ms, build_ms, trace1_ms,
-      trace8_ms, embree_ms, embree_ms / raster_ms, 100.0 * g.same_fraction(), g.hit_vs_miss, g.tie,
-      g.other, g.max_depth_diff, same_depth_bits(scene_hits, raster_hits) ? "yes" : "NO",
-      packets.samples - packets.same);
+      c.name.c_str(), w, h, spp, flat.count(), ms[VERTEX], ms[SCENE], ms[RASTER], ms[BUILD],
+      ms[TRACE1], ms[TRACE8], embree_ms, embree_ms / ms[RASTER], 100.0 * g.same_fraction(),
+      g.hit_vs_miss, g.tie, g.other, g.max_depth_diff,
+      same_depth_bits(scene_hits, raster_hits) ? "yes" : "NO", packets.samples - packets.same);
   std::fflush(stdout);
+  const double wall_embree = wall_ms[BUILD] + std::min(wall_ms[TRACE1], wall_ms[TRACE8]);
+  char row[256];
+  std::snprintf(row, sizeof row, "| %s | %dx%d | %d | %.1f | %.1f | %.1f | %.2f |\n",
+                c.name.c_str(), w, h, spp, wall_ms[SCENE], wall_ms[RASTER], wall_embree,
+                wall_embree / wall_ms[RASTER]);
+  wall_rows.push_back(row);
 }
 
 // Bit-stability across thread counts: Embree's BVH built on 1 and on 2 threads (and traced on as
@@ -159,8 +168,8 @@ int main(int argc, char** argv) {
   std::vector<CaseSpec> specs;
   for (const std::string& name : o.cases) specs.push_back(find_spec(name));
   std::printf(
-      "Median of %d runs, %d thread(s), Embree build quality %s, milliseconds per frame (all "
-      "samples).\n\n",
+      "Median of %d interleaved runs, %d thread(s), Embree build quality %s; process CPU "
+      "milliseconds per frame (all samples, all threads).\n\n",
       o.runs, o.threads, o.quality == RTC_BUILD_QUALITY_LOW ? "low" : "medium");
   std::printf("%s\n\n", EmbreeIds(o.threads, o.quality).describe().c_str());
   std::printf(
@@ -171,6 +180,10 @@ int main(int argc, char** argv) {
   for (const CaseSpec& spec : specs)
     for (const auto& [w, h] : o.sizes)
       for (int spp : o.spp) measure(spec, w, h, spp, o);
+  std::printf(
+      "\nThe same, wall milliseconds:\n\n| case | frame | spp | raster: scene's passes | raster: "
+      "ids | Embree build + trace | Embree / raster |\n|---|---|---|---|---|---|---|\n");
+  for (const std::string& row : wall_rows) std::printf("%s", row.c_str());
   std::printf(
       "\nBit-identical results across threads (rasteriser 1 vs 2 threads; Embree rebuilt 3 times "
       "on 1 thread; Embree built and traced on 2 threads vs 1):\n\n| case | frame | spp | "
