@@ -34,6 +34,13 @@ Agreement compare(const SampleHits& a, const SampleHits& b, const CameraModel& c
   return g;
 }
 
+size_t differing_samples(const SampleHits& a, const SampleHits& b) {
+  size_t n = 0;
+  for (size_t i = 0; i < a.id.size(); ++i)
+    n += a.id[i] != b.id[i] || std::memcmp(&a.depth[i], &b.depth[i], sizeof(float)) != 0;
+  return n;
+}
+
 bool same_depth_bits(const SampleHits& a, const SampleHits& b) {
   return a.depth.size() == b.depth.size() &&
          std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0;

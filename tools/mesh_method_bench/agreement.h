@@ -24,6 +24,8 @@ Agreement compare(const SampleHits& a, const SampleHits& b, const CameraModel& c
 
 // Same ids and the same depth bits everywhere (determinism checks).
 bool bit_identical(const SampleHits& a, const SampleHits& b);
+// Samples whose id or depth bits differ.
+size_t differing_samples(const SampleHits& a, const SampleHits& b);
 // Same depth bits everywhere (ids ignored).
 bool same_depth_bits(const SampleHits& a, const SampleHits& b);
 

@@ -66,10 +66,12 @@ void store_hit(const BenchCase& c, const std::vector<std::unique_ptr<EmbreeIds::
 
 }  // namespace
 
-EmbreeIds::EmbreeIds(int threads, RTCBuildQuality quality) : quality_(quality) {
-  const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
+EmbreeIds::EmbreeIds(int threads, RTCBuildQuality quality, const std::string& isa)
+    : quality_(quality) {
+  std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
+  if (!isa.empty()) config += (config.empty() ? "isa=" : ",isa=") + isa;
   device_ = rtcNewDevice(config.c_str());
-  if (!device_) throw std::runtime_error("rtcNewDevice failed");
+  if (!device_) throw std::runtime_error("rtcNewDevice(\"" + config + "\") failed");
 }
 
 EmbreeIds::~EmbreeIds() {

@@ -24,7 +24,8 @@ class EmbreeIds {
  public:
   // threads: Embree's build threads (0 = all cores); quality: RTC_BUILD_QUALITY_LOW (Morton
   // codes, Embree's choice for scenes rebuilt every frame) or _MEDIUM (binned SAH, its default).
-  EmbreeIds(int threads, RTCBuildQuality quality);
+  // isa: "" (Embree picks the widest the CPU has) or one Embree must use ("sse2", "avx2"...).
+  EmbreeIds(int threads, RTCBuildQuality quality, const std::string& isa = "");
   ~EmbreeIds();
   EmbreeIds(const EmbreeIds&) = delete;
   EmbreeIds& operator=(const EmbreeIds&) = delete;

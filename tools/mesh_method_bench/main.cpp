@@ -5,7 +5,7 @@
 // thread counts. Built only with -DSDFREEL_WITH_EMBREE=ON (tools/mesh_method_bench/CMakeLists.txt).
 //
 //   mesh_method_bench [--runs N] [--threads N] [--quality low|medium] [--cases hall,fur,museum]
-//                     [--sizes 320x180,1280x720] [--spp 1,2,4]
+//                     [--sizes 320x180,1280x720] [--spp 1,2,4] [--images DIR]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +18,7 @@
 #include "agreement.h"
 #include "bench_case.h"
 #include "embree_ids.h"
+#include "id_images.h"
 #include "raster_ids.h"
 #include "timing.h"
 
@@ -32,6 +33,7 @@ struct Options {
   std::vector<std::string> cases{"hall", "fur", "museum"};
   std::vector<std::pair<int, int>> sizes{{320, 180}, {1280, 720}};
   std::vector<int> spp{1, 2, 4};
+  std::string images;  // a folder: write id and difference pictures of every case measured
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -43,7 +45,7 @@ std::vector<std::string> split(const std::string& s) {
 
 constexpr const char* USAGE =
     "usage: mesh_method_bench [--runs N] [--threads N] [--quality low|medium] "
-    "[--cases hall,fur,museum] [--sizes 320x180,1280x720] [--spp 1,2,4]";
+    "[--cases hall,fur,museum] [--sizes 320x180,1280x720] [--spp 1,2,4] [--images DIR]";
 
 [[noreturn]] void usage(const std::string& why) {
   std::fprintf(stderr, "mesh_method_bench: %s\n%s\n", why.c_str(), USAGE);
@@ -67,6 +69,8 @@ Options parse(int argc, char** argv) {
     } else if (a == "--quality") {
       if (v != "low" && v != "medium") usage("--quality is low or medium");
       o.quality = v == "low" ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
+    } else if (a == "--images") {
+      o.images = v;
     } else if (a == "--cases") {
       o.cases = split(v);
     } else if (a == "--sizes") {
@@ -121,7 +125,6 @@ void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
   double ms[STEPS], wall_ms[STEPS];
   for (int k = 0; k < STEPS; ++k) ms[k] = median(cpu[k]), wall_ms[k] = median(wall[k]);
   const Agreement g = compare(raster_hits, ray1, c.camera);
-  const Agreement packets = compare(ray1, ray8, c.camera);
   const double embree_ms = ms[BUILD] + std::min(ms[TRACE1], ms[TRACE8]);
   std::printf(
       "| %s | %dx%d | %d | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f%% | "
@@ -129,8 +132,13 @@ void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
       c.name.c_str(), w, h, spp, flat.count(), ms[VERTEX], ms[SCENE], ms[RASTER], ms[BUILD],
       ms[TRACE1], ms[TRACE8], embree_ms, embree_ms / ms[RASTER], 100.0 * g.same_fraction(),
       g.hit_vs_miss, g.tie, g.other, g.max_depth_diff,
-      same_depth_bits(scene_hits, raster_hits) ? "yes" : "NO", packets.samples - packets.same);
+      same_depth_bits(scene_hits, raster_hits) ? "yes" : "NO", differing_samples(ray1, ray8));
   std::fflush(stdout);
+  if (!o.images.empty())
+    write_id_images(o.images,
+                    c.name + "_" + std::to_string(w) + "x" + std::to_string(h) + "_" +
+                        std::to_string(spp) + "spp",
+                    raster_hits, ray1, c.camera);
   const double wall_embree = wall_ms[BUILD] + std::min(wall_ms[TRACE1], wall_ms[TRACE8]);
   char row[256];
   std::snprintf(row, sizeof row, "| %s | %dx%d | %d | %.1f | %.1f | %.1f | %.2f |\n",
@@ -156,8 +164,21 @@ void determinism(const CaseSpec& spec, int w, int h, int spp, RTCBuildQuality qu
     one.build(c, flat);
     rebuild_same = rebuild_same && bit_identical(a, one.trace(1, false));
   }
-  std::printf("| %s | %dx%d | %d | %s | %s | %s |\n", c.name.c_str(), w, h, spp,
-              raster_same ? "yes" : "NO", rebuild_same ? "yes" : "NO", embree_same ? "yes" : "NO");
+  // Embree picks its kernels by the CPU it runs on: the same build on another machine may use
+  // others. Forced narrower ones stand in for such a machine.
+  std::string isa_same;
+  for (const char* isa : {"sse2", "sse4.2", "avx"}) {
+    EmbreeIds narrow(1, quality, isa);
+    narrow.build(c, flat);
+    const SampleHits b = narrow.trace(1, false);
+    const Agreement g = compare(a, b, c.camera);
+    isa_same += std::string(isa_same.empty() ? "" : ", ") + isa + " " +
+                std::to_string(differing_samples(a, b)) + " (ids " +
+                std::to_string(g.samples - g.same) + ")";
+  }
+  std::printf("| %s | %dx%d | %d | %s | %s | %s | %s |\n", c.name.c_str(), w, h, spp,
+              raster_same ? "yes" : "NO", rebuild_same ? "yes" : "NO", embree_same ? "yes" : "NO",
+              isa_same.c_str());
   std::fflush(stdout);
 }
 
@@ -187,7 +208,9 @@ int main(int argc, char** argv) {
   std::printf(
       "\nBit-identical results across threads (rasteriser 1 vs 2 threads; Embree rebuilt 3 times "
       "on 1 thread; Embree built and traced on 2 threads vs 1):\n\n| case | frame | spp | "
-      "raster 1 = 2 | Embree rebuild = | Embree 2 = 1 |\n|---|---|---|---|---|---|\n");
+      "raster 1 = 2 | Embree rebuild = | Embree 2 = 1 | samples that differ from Embree's default "
+      "(avx2) "
+      "kernels |\n|---|---|---|---|---|---|---|\n");
   for (const CaseSpec& spec : specs)
     determinism(spec, o.sizes.front().first, o.sizes.front().second, o.spp.back(), o.quality);
   return 0;
