@@ -1,5 +1,6 @@
 #include "embree_ids.h"
 
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -18,11 +19,14 @@ struct EmbreeIds::PassGeometry {
 
 namespace {
 
+std::atomic<uint64_t> alpha_tests{0};
+
 // Alpha discard: the scene's shading at the candidate hit, rejected below the pass's cutoff.
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
   const auto* g = static_cast<const EmbreeIds::PassGeometry*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
+    alpha_tests.fetch_add(1, std::memory_order_relaxed);
     const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
     const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
     const uint32_t id = g->id_of_prim[prim];
@@ -65,6 +69,10 @@ void store_hit(const BenchCase& c, const std::vector<std::unique_ptr<EmbreeIds::
 }
 
 }  // namespace
+
+uint64_t take_embree_alpha_tests() {
+  return alpha_tests.exchange(0);
+}
 
 EmbreeIds::EmbreeIds(int threads, RTCBuildQuality quality, const std::string& isa)
     : quality_(quality) {

@@ -11,6 +11,7 @@
 // tell what that changes.
 #include <embree3/rtcore.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@
 #include "sample_hits.h"
 
 namespace sdfreel::mesh_bench {
+
+// Alpha tests (the filter's calls of the scene's shading) since the last call, all threads.
+uint64_t take_embree_alpha_tests();
 
 class EmbreeIds {
  public:

@@ -115,9 +115,12 @@ void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
                                               [&] { ray1 = embree.trace(o.threads, false); },
                                               [&] { ray8 = embree.trace(o.threads, true); }};
   std::vector<double> cpu[STEPS], wall[STEPS];
+  uint64_t alpha_tests[STEPS] = {};
   for (int r = -1; r < o.runs; ++r)
     for (int k = 0; k < STEPS; ++k) {
+      take_raster_alpha_tests(), take_embree_alpha_tests();
       const Elapsed e = time_call(steps[k]);
+      alpha_tests[k] = take_raster_alpha_tests() + take_embree_alpha_tests();
       if (r < 0) continue;
       cpu[k].push_back(e.cpu_ms);
       wall[k].push_back(e.wall_ms);
@@ -140,10 +143,12 @@ void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
                         std::to_string(spp) + "spp",
                     raster_hits, ray1, c.camera);
   const double wall_embree = wall_ms[BUILD] + std::min(wall_ms[TRACE1], wall_ms[TRACE8]);
+  const double samples = double(raster_hits.id.size());
   char row[256];
-  std::snprintf(row, sizeof row, "| %s | %dx%d | %d | %.1f | %.1f | %.1f | %.2f |\n",
+  std::snprintf(row, sizeof row, "| %s | %dx%d | %d | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f |\n",
                 c.name.c_str(), w, h, spp, wall_ms[SCENE], wall_ms[RASTER], wall_embree,
-                wall_embree / wall_ms[RASTER]);
+                wall_embree / wall_ms[RASTER], double(alpha_tests[RASTER]) / samples,
+                double(alpha_tests[TRACE1]) / samples);
   wall_rows.push_back(row);
 }
 
@@ -202,13 +207,17 @@ int main(int argc, char** argv) {
     for (const auto& [w, h] : o.sizes)
       for (int spp : o.spp) measure(spec, w, h, spp, o);
   std::printf(
-      "\nThe same, wall milliseconds:\n\n| case | frame | spp | raster: scene's passes | raster: "
-      "ids | Embree build + trace | Embree / raster |\n|---|---|---|---|---|---|---|\n");
+      "\nThe same, wall milliseconds; and alpha tests (calls of the scene's shading for a fragment "
+      "or "
+      "candidate hit of a pass with alpha discard) per sample:\n\n| case | frame | spp | raster: "
+      "scene's passes | raster: ids | Embree build + trace | Embree / raster | alpha tests: raster "
+      "| alpha tests: Embree x1 |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& row : wall_rows) std::printf("%s", row.c_str());
   std::printf(
       "\nBit-identical results across threads (rasteriser 1 vs 2 threads; Embree rebuilt 3 times "
       "on 1 thread; Embree built and traced on 2 threads vs 1):\n\n| case | frame | spp | "
-      "raster 1 = 2 | Embree rebuild = | Embree 2 = 1 | samples that differ from Embree's default "
+      "raster 1 = 2 | Embree rebuild = | Embree 2 = 1 | samples (ids) that differ from Embree's "
+      "default "
       "(avx2) "
       "kernels |\n|---|---|---|---|---|---|---|\n");
   for (const CaseSpec& spec : specs)

@@ -1,5 +1,6 @@
 #include "raster_ids.h"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,6 +11,8 @@
 
 namespace sdfreel::mesh_bench {
 namespace {
+
+std::atomic<uint64_t> alpha_tests{0};
 
 constexpr uint32_t MAX_IDS = 1u << 24;  // ids ride in a float: exact below 2^24
 
@@ -44,6 +47,7 @@ MeshPass id_pass(const BenchCase& c, const FlatTriangles& flat, size_t p) {
     const uint32_t id = uint32_t(std::lround(frag.world_normal.x));
     float a = 1.0f;
     if (alpha) {
+      alpha_tests.fetch_add(1, std::memory_order_relaxed);
       MeshFragment g = frag;
       g.instance_data = original->instances[f->instance_of[id]].data;
       g.world_normal = glm::vec3(0.0f, 1.0f, 0.0f);  // alpha never reads it
@@ -55,6 +59,10 @@ MeshPass id_pass(const BenchCase& c, const FlatTriangles& flat, size_t p) {
 }
 
 }  // namespace
+
+uint64_t take_raster_alpha_tests() {
+  return alpha_tests.exchange(0);
+}
 
 RasterIds::RasterIds(const BenchCase& c, const FlatTriangles& flat) : case_(c) {
   if (flat.count() >= MAX_IDS) throw std::runtime_error("too many triangles for float ids");

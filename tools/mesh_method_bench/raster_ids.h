@@ -6,6 +6,7 @@
 // and depth), the id in the normal, which the rasteriser interpolates as a constant. Passes with
 // alpha discard (fur shells) still call the scene's own shading for alpha, with the instance data
 // and uv of the original triangle (shell alpha reads nothing else).
+#include <cstdint>
 #include <memory>
 
 #include "bench_case.h"
@@ -22,6 +23,9 @@ class RasterIds {
   const BenchCase& case_;
   std::vector<MeshPass> id_passes_;
 };
+
+// Alpha tests (the scene's shading called for a shell fragment) since the last call, all threads.
+uint64_t take_raster_alpha_tests();
 
 // The scene's own passes with their own vertex stage and shading, as the renderer draws them: the
 // time of the real thing, and the depth the id passes must reproduce (ids stay 0).
