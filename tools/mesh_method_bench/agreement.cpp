@@ -6,7 +6,8 @@
 
 namespace sdfreel::mesh_bench {
 
-Agreement compare(const SampleHits& a, const SampleHits& b, const CameraModel& camera) {
+Agreement compare(const SampleHits& a, const SampleHits& b, const CameraModel& camera,
+                  const std::vector<bool>& alpha_pass) {
   Agreement g;
   g.samples = a.id.size();
   for (size_t i = 0; i < a.id.size(); ++i) {
@@ -29,6 +30,8 @@ Agreement compare(const SampleHits& a, const SampleHits& b, const CameraModel& c
       ++g.tie;
     } else {
       ++g.other;
+      if (!alpha_pass.empty() && alpha_pass[a.id[i] - 1] && alpha_pass[b.id[i] - 1])
+        ++g.other_alpha;
     }
   }
   return g;

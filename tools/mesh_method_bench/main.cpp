@@ -127,14 +127,17 @@ void measure(const CaseSpec& spec, int w, int h, int spp, const Options& o) {
     }
   double ms[STEPS], wall_ms[STEPS];
   for (int k = 0; k < STEPS; ++k) ms[k] = median(cpu[k]), wall_ms[k] = median(wall[k]);
-  const Agreement g = compare(raster_hits, ray1, c.camera);
+  std::vector<bool> alpha_pass(flat.count());
+  for (size_t t = 0; t < flat.count(); ++t)
+    alpha_pass[t] = c.passes[flat.pass_of[t]].alpha_cutoff > 0.0f;
+  const Agreement g = compare(raster_hits, ray1, c.camera, alpha_pass);
   const double embree_ms = ms[BUILD] + std::min(ms[TRACE1], ms[TRACE8]);
   std::printf(
       "| %s | %dx%d | %d | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f%% | "
-      "%zu | %zu | %zu | %.1e | %s | %zu |\n",
+      "%zu | %zu | %zu | %zu | %.1e | %s | %zu |\n",
       c.name.c_str(), w, h, spp, flat.count(), ms[VERTEX], ms[SCENE], ms[RASTER], ms[BUILD],
       ms[TRACE1], ms[TRACE8], embree_ms, embree_ms / ms[RASTER], 100.0 * g.same_fraction(),
-      g.hit_vs_miss, g.tie, g.other, g.max_depth_diff,
+      g.hit_vs_miss, g.tie, g.other, g.other_alpha, g.max_depth_diff,
       same_depth_bits(scene_hits, raster_hits) ? "yes" : "NO", differing_samples(ray1, ray8));
   std::fflush(stdout);
   if (!o.images.empty())
@@ -201,8 +204,9 @@ int main(int argc, char** argv) {
   std::printf(
       "| case | frame | spp | triangles | vertex stage | raster: scene's passes | raster: ids | "
       "Embree build | Embree trace x1 | Embree trace x8 | Embree build + trace | Embree / raster | "
-      "same triangle | hit vs miss | ties | other | max dz_w same tri | ids = scene depth | x1 != "
-      "x8 |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "same triangle | hit vs miss | ties | other | of which both alpha | max dz_w same tri | ids "
+      "= scene depth | x1 != "
+      "x8 |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const CaseSpec& spec : specs)
     for (const auto& [w, h] : o.sizes)
       for (int spp : o.spp) measure(spec, w, h, spp, o);
