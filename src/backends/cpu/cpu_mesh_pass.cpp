@@ -62,33 +62,88 @@ double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc) {
+// The triangle's pixel bounds, with a pixel of margin (conservative; rasterise() clips exactly),
+// in image rows (window rows run up, image rows down: image row y = height - 1 - window row).
+struct PixelBounds {
+  double lo_x, hi_x, lo_y, hi_y;
+  bool off_frame(int width, int height) const {
+    return hi_x < 0.0 || lo_x >= width || hi_y < 0.0 || lo_y >= height;
+  }
+};
+
+PixelBounds pixel_bounds(const ScreenTriangle& s, int height) {
+  const glm::dvec2* p = s.p;
+  return {std::min({p[0].x, p[1].x, p[2].x}) - 1.0, std::max({p[0].x, p[1].x, p[2].x}) + 1.0,
+          height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0),
+          height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0)};
+}
+
+}  // namespace
+
+struct MeshPassCache::Data {
+  const MeshPass* placed_for = nullptr;   // the pass whose vertices world and normal hold
+  std::vector<glm::vec3> world, normal;   // instance-major: instance * vertex_count + vertex
+  std::vector<glm::vec4> clip;            // this sample's clip positions, same order
+  std::vector<ScreenTriangle> triangles;  // this sample's, reused
+  std::vector<std::vector<unsigned>> bins;
+};
+
+MeshPassCache::MeshPassCache() : data_(std::make_unique<Data>()) {}
+MeshPassCache::~MeshPassCache() = default;
+MeshPassCache::MeshPassCache(MeshPassCache&&) noexcept = default;
+
+namespace {
+
+// The vertex stage: every vertex of every instance placed in world space, once per frame.
+void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   const TriangleMesh& m = *pass.mesh;
-  const FrameContext& f = pc.frame;
-  const glm::mat4 view_proj =
-      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
-  std::vector<ScreenTriangle> out;
+  const size_t nv = m.vertex_count();
+  d.world.resize(pass.instances.size() * nv);
+  d.normal.resize(d.world.size());
+  size_t o = 0;
   for (const MeshInstance& inst : pass.instances) {
     const glm::mat3 normal_matrix(inst.model);
+    for (size_t i = 0; i < nv; ++i, ++o) {
+      const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1], m.positions[i * 3 + 2]);
+      const glm::vec3 normal = m.normals.empty() ? glm::vec3(0.0f)
+                                                 : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
+                                                             m.normals[i * 3 + 2]);
+      if (pass.place) {
+        const PlacedVertex placed = pass.place(inst, position, normal);
+        d.world[o] = placed.world;
+        d.normal[o] = placed.normal;
+      } else {
+        d.world[o] = glm::vec3(inst.model * glm::vec4(position, 1.0f));
+        d.normal[o] = normal_matrix * normal;
+      }
+    }
+  }
+  d.placed_for = &pass;
+}
+
+// This sample's screen triangles into d.triangles: clip positions once per vertex, then per
+// triangle near clipping, culling and the window transform. Triangles wholly off the frame are
+// dropped here (the bins never held them).
+void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& d) {
+  const TriangleMesh& m = *pass.mesh;
+  const FrameContext& f = pc.frame;
+  if (d.placed_for != &pass) place_vertices(pass, d);
+  const glm::mat4 view_proj =
+      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
+  d.clip.resize(d.world.size());
+  for (size_t i = 0; i < d.world.size(); ++i) d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
+  d.triangles.clear();
+  const size_t nv = m.vertex_count();
+  for (size_t n_inst = 0; n_inst < pass.instances.size(); ++n_inst) {
+    const MeshInstance& inst = pass.instances[n_inst];
+    const size_t base = n_inst * nv;
     for (size_t t = 0; t < m.triangle_count(); ++t) {
       ClipVertex v[3];
       for (int k = 0; k < 3; ++k) {
         const unsigned i = m.index(t * 3 + size_t(k));
-        const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1],
-                                 m.positions[i * 3 + 2]);
-        const glm::vec3 normal =
-            m.normals.empty()
-                ? glm::vec3(0.0f)
-                : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1], m.normals[i * 3 + 2]);
-        if (pass.place) {
-          const PlacedVertex placed = pass.place(inst, position, normal);
-          v[k].world = placed.world;
-          v[k].normal = placed.normal;
-        } else {
-          v[k].world = glm::vec3(inst.model * glm::vec4(position, 1.0f));
-          v[k].normal = normal_matrix * normal;
-        }
-        v[k].clip = view_proj * glm::vec4(v[k].world, 1.0f);
+        v[k].world = d.world[base + i];
+        v[k].normal = d.normal[base + i];
+        v[k].clip = d.clip[base + i];
         v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
       }
       ClipVertex clipped[6];
@@ -110,6 +165,7 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
         s.front = area > 0.0;
         if ((pass.cull == CullMode::Back && !s.front) || (pass.cull == CullMode::Front && s.front))
           continue;
+        if (pixel_bounds(s, f.height).off_frame(f.width, f.height)) continue;
         if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one
                          // case
           std::swap(s.p[1], s.p[2]);
@@ -117,11 +173,10 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
           std::swap(s.depth[1], s.depth[2]);
           std::swap(s.v[1], s.v[2]);
         }
-        out.push_back(s);
+        d.triangles.push_back(s);
       }
     }
   }
-  return out;
 }
 
 struct MeshTargets {
@@ -188,32 +243,28 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
 // The triangles whose pixel bounds may touch each tile, in mesh order (so each pixel still sees
 // its fragments in the same order): a pass of many triangles (fur shells) then costs each tile only
 // its own triangles. The bounds are conservative; rasterise() clips exactly.
-std::vector<std::vector<unsigned>> bin_by_tile(const std::vector<ScreenTriangle>& triangles,
-                                               const FrameContext& f, int tile_size) {
+void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const FrameContext& f, int tile_size,
+                 std::vector<std::vector<unsigned>>& bins) {
   const int cols = (f.width + tile_size - 1) / tile_size;
   const int rows = (f.height + tile_size - 1) / tile_size;
-  std::vector<std::vector<unsigned>> bins(size_t(cols * rows));
+  bins.resize(size_t(cols * rows));
+  for (std::vector<unsigned>& b : bins) b.clear();
   for (size_t i = 0; i < triangles.size(); ++i) {
-    const glm::dvec2* p = triangles[i].p;
-    // Window rows run up, image rows down: image row y = height - 1 - window row.
-    const double lo_x = std::min({p[0].x, p[1].x, p[2].x}) - 1.0;
-    const double hi_x = std::max({p[0].x, p[1].x, p[2].x}) + 1.0;
-    const double lo_y = f.height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0);
-    const double hi_y = f.height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0);
-    if (hi_x < 0.0 || lo_x >= f.width || hi_y < 0.0 || lo_y >= f.height) continue;
-    const int c0 = int(std::max(lo_x, 0.0)) / tile_size;
-    const int c1 = std::min(cols - 1, int(std::min(hi_x, double(f.width - 1))) / tile_size);
-    const int r0 = int(std::max(lo_y, 0.0)) / tile_size;
-    const int r1 = std::min(rows - 1, int(std::min(hi_y, double(f.height - 1))) / tile_size);
+    const PixelBounds b = pixel_bounds(triangles[i], f.height);
+    if (b.off_frame(f.width, f.height)) continue;
+    const int c0 = int(std::max(b.lo_x, 0.0)) / tile_size;
+    const int c1 = std::min(cols - 1, int(std::min(b.hi_x, double(f.width - 1))) / tile_size);
+    const int r0 = int(std::max(b.lo_y, 0.0)) / tile_size;
+    const int r1 = std::min(rows - 1, int(std::min(b.hi_y, double(f.height - 1))) / tile_size);
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
   }
-  return bins;
 }
 
 }  // namespace
 
-void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
+void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets,
+                   MeshPassCache& cache) {
   if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
   if (!pass.shade && !pass.shade_depth)
     throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
@@ -223,11 +274,12 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
     out.test = pass.depth_test != DepthTest::Off;
     out.write_depth = pass.depth_test != DepthTest::TestOnly;
   }
-  const std::vector<ScreenTriangle> triangles = setup(pass, pc);
+  MeshPassCache::Data& d = cache.data();
+  setup(pass, pc, d);
   const FrameContext& f = pc.frame;
-  const std::vector<std::vector<unsigned>> bins = bin_by_tile(triangles, f, pc.tile_size);
+  bin_by_tile(d.triangles, f, pc.tile_size, d.bins);
   for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (unsigned i : bins[size_t(t.index)]) rasterise(triangles[i], pass, t, f.height, out);
+    for (unsigned i : d.bins[size_t(t.index)]) rasterise(d.triangles[i], pass, t, f.height, out);
   });
 }
 
