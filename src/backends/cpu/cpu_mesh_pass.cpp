@@ -71,11 +71,23 @@ struct PixelBounds {
   }
 };
 
-PixelBounds pixel_bounds(const ScreenTriangle& s, int height) {
-  const glm::dvec2* p = s.p;
+PixelBounds pixel_bounds(const glm::dvec2 p[3], int height) {
   return {std::min({p[0].x, p[1].x, p[2].x}) - 1.0, std::max({p[0].x, p[1].x, p[2].x}) + 1.0,
           height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0),
           height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0)};
+}
+
+// A vertex's window position, 1 / w and window depth z_w: the window transform of its clip
+// position, in double.
+struct WindowVertex {
+  glm::dvec2 p;
+  double inv_w, depth;
+};
+
+WindowVertex to_window(const glm::vec4& clip, int width, int height) {
+  const double w = clip.w;
+  return {glm::dvec2((clip.x / w * 0.5 + 0.5) * width, (clip.y / w * 0.5 + 0.5) * height), 1.0 / w,
+          clip.z / w * 0.5 + 0.5};
 }
 
 }  // namespace
@@ -84,6 +96,7 @@ struct MeshPassCache::Data {
   const MeshPass* placed_for = nullptr;   // the pass whose vertices world and normal hold
   std::vector<glm::vec3> world, normal;   // instance-major: instance * vertex_count + vertex
   std::vector<glm::vec4> clip;            // this sample's clip positions, same order
+  std::vector<WindowVertex> window;       // and their window transforms
   std::vector<ScreenTriangle> triangles;  // this sample's, reused
   std::vector<std::vector<unsigned>> bins;
 };
@@ -121,9 +134,35 @@ void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   d.placed_for = &pass;
 }
 
-// This sample's screen triangles into d.triangles: clip positions once per vertex, then per
-// triangle near clipping, culling and the window transform. Triangles wholly off the frame are
-// dropped here (the bins never held them).
+// Appends the triangle of window vertices wv and varyings cv() unless it has no area, is culled
+// or lies wholly off the frame (the bins would never hold it); cv is called only for triangles
+// kept, so culled ones cost no copies.
+template <class Varyings>
+void emit(const WindowVertex wv[3], Varyings cv, const glm::vec4& data, CullMode cull,
+          const FrameContext& f, std::vector<ScreenTriangle>& out) {
+  const glm::dvec2 p[3] = {wv[0].p, wv[1].p, wv[2].p};
+  const double area = edge(p[0], p[1], p[2]);
+  if (area == 0.0) return;
+  const bool front = area > 0.0;
+  if ((cull == CullMode::Back && !front) || (cull == CullMode::Front && front)) return;
+  if (pixel_bounds(p, f.height).off_frame(f.width, f.height)) return;
+  ScreenTriangle& s = out.emplace_back();
+  s.data = data;
+  s.front = front;
+  // Counter-clockwise order, so edge tests and the top-left rule are one case.
+  const int order[3] = {0, front ? 1 : 2, front ? 2 : 1};
+  for (int k = 0; k < 3; ++k) {
+    const WindowVertex& w = wv[order[k]];
+    s.p[k] = w.p;
+    s.inv_w[k] = w.inv_w;
+    s.depth[k] = w.depth;
+    s.v[k] = cv(order[k]);
+  }
+}
+
+// This sample's screen triangles into d.triangles: clip positions and window transforms once per
+// vertex, then per triangle near clipping (only for triangles that cross the near plane: one wholly
+// in front is its own clipped self), culling and the off-frame test.
 void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& d) {
   const TriangleMesh& m = *pass.mesh;
   const FrameContext& f = pc.frame;
@@ -131,49 +170,47 @@ void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& 
   const glm::mat4 view_proj =
       sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
   d.clip.resize(d.world.size());
-  for (size_t i = 0; i < d.world.size(); ++i) d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
+  d.window.resize(d.world.size());
+  for (size_t i = 0; i < d.world.size(); ++i) {
+    d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
+    d.window[i] = to_window(d.clip[i], f.width, f.height);
+  }
   d.triangles.clear();
   const size_t nv = m.vertex_count();
+  auto uv_of = [&m](unsigned i) {
+    return m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
+  };
   for (size_t n_inst = 0; n_inst < pass.instances.size(); ++n_inst) {
-    const MeshInstance& inst = pass.instances[n_inst];
+    const glm::vec4& data = pass.instances[n_inst].data;
     const size_t base = n_inst * nv;
     for (size_t t = 0; t < m.triangle_count(); ++t) {
-      ClipVertex v[3];
+      unsigned idx[3];
+      bool in_front = true;
       for (int k = 0; k < 3; ++k) {
-        const unsigned i = m.index(t * 3 + size_t(k));
-        v[k].world = d.world[base + i];
-        v[k].normal = d.normal[base + i];
-        v[k].clip = d.clip[base + i];
-        v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
+        idx[k] = m.index(t * 3 + size_t(k));
+        const glm::vec4& c = d.clip[base + idx[k]];
+        in_front = in_front && c.z + c.w >= 0.0f;
       }
+      auto vertex = [&](int k) {
+        const size_t o = base + idx[k];
+        return ClipVertex{d.clip[o], d.world[o], d.normal[o], uv_of(idx[k])};
+      };
+      if (in_front) {
+        const WindowVertex wv[3] = {d.window[base + idx[0]], d.window[base + idx[1]],
+                                    d.window[base + idx[2]]};
+        emit(wv, vertex, data, pass.cull, f, d.triangles);
+        continue;
+      }
+      const ClipVertex v[3] = {vertex(0), vertex(1), vertex(2)};
       ClipVertex clipped[6];
       const int n = clip_near(v, clipped);
       for (int c = 0; c < n; ++c) {
-        ScreenTriangle s;
-        s.data = inst.data;
-        for (int k = 0; k < 3; ++k) {
-          const ClipVertex& cv = clipped[c * 3 + k];
-          const double w = cv.clip.w;
-          s.p[k] = glm::dvec2((cv.clip.x / w * 0.5 + 0.5) * f.width,
-                              (cv.clip.y / w * 0.5 + 0.5) * f.height);
-          s.inv_w[k] = 1.0 / w;
-          s.depth[k] = cv.clip.z / w * 0.5 + 0.5;
-          s.v[k] = cv;
-        }
-        const double area = edge(s.p[0], s.p[1], s.p[2]);
-        if (area == 0.0) continue;
-        s.front = area > 0.0;
-        if ((pass.cull == CullMode::Back && !s.front) || (pass.cull == CullMode::Front && s.front))
-          continue;
-        if (pixel_bounds(s, f.height).off_frame(f.width, f.height)) continue;
-        if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one
-                         // case
-          std::swap(s.p[1], s.p[2]);
-          std::swap(s.inv_w[1], s.inv_w[2]);
-          std::swap(s.depth[1], s.depth[2]);
-          std::swap(s.v[1], s.v[2]);
-        }
-        d.triangles.push_back(s);
+        const ClipVertex* cv = clipped + c * 3;
+        const WindowVertex wv[3] = {to_window(cv[0].clip, f.width, f.height),
+                                    to_window(cv[1].clip, f.width, f.height),
+                                    to_window(cv[2].clip, f.width, f.height)};
+        emit(
+            wv, [cv](int k) { return cv[k]; }, data, pass.cull, f, d.triangles);
       }
     }
   }
@@ -250,7 +287,7 @@ void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const FrameContex
   bins.resize(size_t(cols * rows));
   for (std::vector<unsigned>& b : bins) b.clear();
   for (size_t i = 0; i < triangles.size(); ++i) {
-    const PixelBounds b = pixel_bounds(triangles[i], f.height);
+    const PixelBounds b = pixel_bounds(triangles[i].p, f.height);
     if (b.off_frame(f.width, f.height)) continue;
     const int c0 = int(std::max(b.lo_x, 0.0)) / tile_size;
     const int c1 = std::min(cols - 1, int(std::min(b.hi_x, double(f.width - 1))) / tile_size);
