@@ -232,16 +232,26 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
   const double hi_y =
       std::min(double(height - 1 - t.y0), std::max({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
   const double area = edge(s.p[0], s.p[1], s.p[2]);
-  for (int wy = int(std::ceil(lo_y)); wy <= int(std::floor(hi_y)); ++wy)
+  // Edge k runs from vertex k + 1 to k + 2; edge(a, c, p) = ex * (p.y - a.y) - ey * (p.x - a.x)
+  // with its per-triangle and per-row parts computed once: the same operations on the same values.
+  double ax[3], ay[3], ex[3], ey[3], row[3];
+  bool tl[3];
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2& a = s.p[(k + 1) % 3];
+    const glm::dvec2& c = s.p[(k + 2) % 3];
+    ax[k] = a.x, ay[k] = a.y, ex[k] = c.x - a.x, ey[k] = c.y - a.y;
+    tl[k] = top_left(a, c);
+  }
+  for (int wy = int(std::ceil(lo_y)); wy <= int(std::floor(hi_y)); ++wy) {
+    const double centre_y = wy + 0.5;
+    for (int k = 0; k < 3; ++k) row[k] = ex[k] * (centre_y - ay[k]);
     for (int wx = int(std::ceil(lo_x)); wx <= int(std::floor(hi_x)); ++wx) {
-      const glm::dvec2 p(wx + 0.5, wy + 0.5);
+      const double centre_x = wx + 0.5;
       double b[3];
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k) {
-        const glm::dvec2& a = s.p[(k + 1) % 3];
-        const glm::dvec2& c = s.p[(k + 2) % 3];
-        b[k] = edge(a, c, p);
-        inside = b[k] > 0.0 || (b[k] == 0.0 && top_left(a, c));
+        b[k] = row[k] - ey[k] * (centre_x - ax[k]);
+        inside = b[k] > 0.0 || (b[k] == 0.0 && tl[k]);
       }
       if (!inside) continue;
       const double l0 = b[0] / area, l1 = b[1] / area, l2 = b[2] / area;
@@ -275,6 +285,7 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       px[2] = c.b;
       px[3] = c.a;
     }
+  }
 }
 
 // The triangles whose pixel bounds may touch each tile, in mesh order (so each pixel still sees
