@@ -131,6 +131,11 @@ struct ImagePass {
   std::string shader;
   std::vector<ShaderUniform> uniforms;
   std::function<glm::vec4(const ImageInputs&, int x, int y)> pixel;
+  // Optional CPU fast path, preferred when set: called once per run with the inputs (to summarise
+  // them), it returns a function that writes pixels x0 <= x < x1 of row y to `out` (4 floats a
+  // pixel), giving `pixel`'s bits (lane code: the same operations in the same order).
+  using RowFunction = std::function<void(int y, int x0, int x1, float* out)>;
+  std::function<RowFunction(const ImageInputs&)> rows;
 };
 
 using Pass = std::variant<RayPass, MeshPass, ImagePass>;

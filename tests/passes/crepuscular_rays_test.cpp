@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "backends/cpu/plan_runner.h"
 #include "passes/plan_fixture.h"
+#include "render/passes/crepuscular_rays_rows.h"
 
 namespace sdfreel {
 namespace {
@@ -82,6 +85,55 @@ TEST(CrepuscularRays, PatternIsIndependentOfThreadsAndJittered) {
   rays.jitter_seed = 5;
   const ImageRGBA other = render_rays(rays, true, 0.0f, 40, 22);
   EXPECT_NE(one.pixels, other.pixels);
+}
+
+// An occlusion image of w x h: lit (1) inside the box [x0, x1) x [y0, y1), `outside` elsewhere.
+ImageRGBA occlusion_window(int w, int h, int x0, int x1, int y0, int y1, float outside = 0.0f) {
+  ImageRGBA occ(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool lit = x >= x0 && x < x1 && y >= y0 && y < y1;
+      occ.at(x, y)[0] = lit ? 1.0f : outside;
+    }
+  return occ;
+}
+
+// The row function (lanes, lit-box skipping) against the pixel function, bit for bit: lights
+// inside, at the border and off screen, a lane column straight below the light, decay below 1,
+// spans that end mid-packet, and occlusion with -0 and negative texels (where nothing is skipped).
+TEST(CrepuscularRays, RowsGiveThePixelFunctionsBits) {
+  const int w = 37, h = 23;
+  std::vector<ImageRGBA> images = {
+      occlusion_window(w, h, 20, 27, 3, 9), occlusion_window(w, h, 0, 0, 0, 0),
+      occlusion_window(w, h, 0, w, 0, h), occlusion_window(w, h, 30, 37, 15, 23, -0.0f),
+      occlusion_window(w, h, 5, 9, 2, 20, -0.25f)};
+  ImageRGBA pattern(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) pattern.at(x, y)[0] = test::occlusion_pattern(x, y) * 0.75f;
+  images.push_back(pattern);
+  const glm::vec2 lights[] = {{0.6f, 0.25f}, {(23.0f + 0.5f) / w, 0.3f},
+                              {1.4f, -0.3f}, {-0.2f, 0.5f},
+                              {0.5f, 1.0f},  {0.0f, 0.0f}};
+  for (const ImageRGBA& occ : images)
+    for (const glm::vec2 light : lights)
+      for (const float decay : {1.0f, 0.97f}) {
+        CrepuscularRays rays;
+        rays.light_uv = light;
+        rays.decay = decay;
+        const ImagePass::RowFunction row = crepuscular_rays_rows(rays, occ);
+        for (int y = 0; y < h; ++y)
+          for (const auto& span : {std::pair<int, int>{0, w}, std::pair<int, int>{3, 14}}) {
+            std::vector<float> out(size_t(4 * (span.second - span.first)), -1.0f);
+            row(y, span.first, span.second, out.data());
+            for (int x = span.first; x < span.second; ++x) {
+              const glm::vec4 want = crepuscular_rays_pixel(rays, occ, x, y);
+              ASSERT_EQ(std::memcmp(&out[size_t(4 * (x - span.first))], &want[0], 16), 0)
+                  << "pixel " << x << "," << y << " light " << light.x << "," << light.y
+                  << " decay " << decay << ": " << out[size_t(4 * (x - span.first))] << " vs "
+                  << want.x;
+            }
+          }
+      }
 }
 
 }  // namespace

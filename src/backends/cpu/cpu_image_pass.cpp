@@ -16,6 +16,13 @@ void run_image_pass(const ImagePass& pass, const CpuPassContext& pc, CpuTargets&
     in.images.push_back(&targets.get(i.target, pass.name));
   }
   ImageRGBA& out = targets.get(pass.output, pass.name);
+  if (pass.rows) {
+    const ImagePass::RowFunction row = pass.rows(in);
+    for_each_tile(out.width, out.height, pc.tile_size, pc.threads, [&](const Tile& t) {
+      for (int y = t.y0; y < t.y1; ++y) row(y, t.x0, t.x1, out.at(t.x0, y));
+    });
+    return;
+  }
   for_each_tile(out.width, out.height, pc.tile_size, pc.threads, [&](const Tile& t) {
     for (int y = t.y0; y < t.y1; ++y)
       for (int x = t.x0; x < t.x1; ++x) {

@@ -62,66 +62,158 @@ double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc) {
+// The triangle's pixel bounds, with a pixel of margin (conservative; rasterise() clips exactly),
+// in image rows (window rows run up, image rows down: image row y = height - 1 - window row).
+struct PixelBounds {
+  double lo_x, hi_x, lo_y, hi_y;
+  bool off_frame(int width, int height) const {
+    return hi_x < 0.0 || lo_x >= width || hi_y < 0.0 || lo_y >= height;
+  }
+};
+
+PixelBounds pixel_bounds(const glm::dvec2 p[3], int height) {
+  return {std::min({p[0].x, p[1].x, p[2].x}) - 1.0, std::max({p[0].x, p[1].x, p[2].x}) + 1.0,
+          height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0),
+          height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0)};
+}
+
+// A vertex's window position, 1 / w and window depth z_w: the window transform of its clip
+// position, in double.
+struct WindowVertex {
+  glm::dvec2 p;
+  double inv_w, depth;
+};
+
+WindowVertex to_window(const glm::vec4& clip, int width, int height) {
+  const double w = clip.w;
+  return {glm::dvec2((clip.x / w * 0.5 + 0.5) * width, (clip.y / w * 0.5 + 0.5) * height), 1.0 / w,
+          clip.z / w * 0.5 + 0.5};
+}
+
+}  // namespace
+
+struct MeshPassCache::Data {
+  const MeshPass* placed_for = nullptr;   // the pass whose vertices world and normal hold
+  std::vector<glm::vec3> world, normal;   // instance-major: instance * vertex_count + vertex
+  std::vector<glm::vec4> clip;            // this sample's clip positions, same order
+  std::vector<WindowVertex> window;       // and their window transforms
+  std::vector<ScreenTriangle> triangles;  // this sample's, reused
+  std::vector<std::vector<unsigned>> bins;
+};
+
+MeshPassCache::MeshPassCache() : data_(std::make_unique<Data>()) {}
+MeshPassCache::~MeshPassCache() = default;
+MeshPassCache::MeshPassCache(MeshPassCache&&) noexcept = default;
+
+namespace {
+
+// The vertex stage: every vertex of every instance placed in world space, once per frame.
+void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   const TriangleMesh& m = *pass.mesh;
-  const FrameContext& f = pc.frame;
-  const glm::mat4 view_proj =
-      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
-  std::vector<ScreenTriangle> out;
+  const size_t nv = m.vertex_count();
+  d.world.resize(pass.instances.size() * nv);
+  d.normal.resize(d.world.size());
+  size_t o = 0;
   for (const MeshInstance& inst : pass.instances) {
     const glm::mat3 normal_matrix(inst.model);
-    for (size_t t = 0; t < m.triangle_count(); ++t) {
-      ClipVertex v[3];
-      for (int k = 0; k < 3; ++k) {
-        const unsigned i = m.index(t * 3 + size_t(k));
-        const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1],
-                                 m.positions[i * 3 + 2]);
-        const glm::vec3 normal =
-            m.normals.empty()
-                ? glm::vec3(0.0f)
-                : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1], m.normals[i * 3 + 2]);
-        if (pass.place) {
-          const PlacedVertex placed = pass.place(inst, position, normal);
-          v[k].world = placed.world;
-          v[k].normal = placed.normal;
-        } else {
-          v[k].world = glm::vec3(inst.model * glm::vec4(position, 1.0f));
-          v[k].normal = normal_matrix * normal;
-        }
-        v[k].clip = view_proj * glm::vec4(v[k].world, 1.0f);
-        v[k].uv = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
-      }
-      ClipVertex clipped[6];
-      const int n = clip_near(v, clipped);
-      for (int c = 0; c < n; ++c) {
-        ScreenTriangle s;
-        s.data = inst.data;
-        for (int k = 0; k < 3; ++k) {
-          const ClipVertex& cv = clipped[c * 3 + k];
-          const double w = cv.clip.w;
-          s.p[k] = glm::dvec2((cv.clip.x / w * 0.5 + 0.5) * f.width,
-                              (cv.clip.y / w * 0.5 + 0.5) * f.height);
-          s.inv_w[k] = 1.0 / w;
-          s.depth[k] = cv.clip.z / w * 0.5 + 0.5;
-          s.v[k] = cv;
-        }
-        const double area = edge(s.p[0], s.p[1], s.p[2]);
-        if (area == 0.0) continue;
-        s.front = area > 0.0;
-        if ((pass.cull == CullMode::Back && !s.front) || (pass.cull == CullMode::Front && s.front))
-          continue;
-        if (!s.front) {  // order counter-clockwise, so edge tests and the top-left rule are one
-                         // case
-          std::swap(s.p[1], s.p[2]);
-          std::swap(s.inv_w[1], s.inv_w[2]);
-          std::swap(s.depth[1], s.depth[2]);
-          std::swap(s.v[1], s.v[2]);
-        }
-        out.push_back(s);
+    for (size_t i = 0; i < nv; ++i, ++o) {
+      const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1], m.positions[i * 3 + 2]);
+      const glm::vec3 normal = m.normals.empty() ? glm::vec3(0.0f)
+                                                 : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
+                                                             m.normals[i * 3 + 2]);
+      if (pass.place) {
+        const PlacedVertex placed = pass.place(inst, position, normal);
+        d.world[o] = placed.world;
+        d.normal[o] = placed.normal;
+      } else {
+        d.world[o] = glm::vec3(inst.model * glm::vec4(position, 1.0f));
+        d.normal[o] = normal_matrix * normal;
       }
     }
   }
-  return out;
+  d.placed_for = &pass;
+}
+
+// Appends the triangle of window vertices wv and varyings cv() unless it has no area, is culled
+// or lies wholly off the frame (the bins would never hold it); cv is called only for triangles
+// kept, so culled ones cost no copies.
+template <class Varyings>
+void emit(const WindowVertex wv[3], Varyings cv, const glm::vec4& data, CullMode cull,
+          const FrameContext& f, std::vector<ScreenTriangle>& out) {
+  const glm::dvec2 p[3] = {wv[0].p, wv[1].p, wv[2].p};
+  const double area = edge(p[0], p[1], p[2]);
+  if (area == 0.0) return;
+  const bool front = area > 0.0;
+  if ((cull == CullMode::Back && !front) || (cull == CullMode::Front && front)) return;
+  if (pixel_bounds(p, f.height).off_frame(f.width, f.height)) return;
+  ScreenTriangle& s = out.emplace_back();
+  s.data = data;
+  s.front = front;
+  // Counter-clockwise order, so edge tests and the top-left rule are one case.
+  const int order[3] = {0, front ? 1 : 2, front ? 2 : 1};
+  for (int k = 0; k < 3; ++k) {
+    const WindowVertex& w = wv[order[k]];
+    s.p[k] = w.p;
+    s.inv_w[k] = w.inv_w;
+    s.depth[k] = w.depth;
+    s.v[k] = cv(order[k]);
+  }
+}
+
+// This sample's screen triangles into d.triangles: clip positions and window transforms once per
+// vertex, then per triangle near clipping (only for triangles that cross the near plane: one wholly
+// in front is its own clipped self), culling and the off-frame test.
+void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& d) {
+  const TriangleMesh& m = *pass.mesh;
+  const FrameContext& f = pc.frame;
+  if (d.placed_for != &pass) place_vertices(pass, d);
+  const glm::mat4 view_proj =
+      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
+  d.clip.resize(d.world.size());
+  d.window.resize(d.world.size());
+  for (size_t i = 0; i < d.world.size(); ++i) {
+    d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
+    d.window[i] = to_window(d.clip[i], f.width, f.height);
+  }
+  d.triangles.clear();
+  const size_t nv = m.vertex_count();
+  auto uv_of = [&m](unsigned i) {
+    return m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
+  };
+  for (size_t n_inst = 0; n_inst < pass.instances.size(); ++n_inst) {
+    const glm::vec4& data = pass.instances[n_inst].data;
+    const size_t base = n_inst * nv;
+    for (size_t t = 0; t < m.triangle_count(); ++t) {
+      unsigned idx[3];
+      bool in_front = true;
+      for (int k = 0; k < 3; ++k) {
+        idx[k] = m.index(t * 3 + size_t(k));
+        const glm::vec4& c = d.clip[base + idx[k]];
+        in_front = in_front && c.z + c.w >= 0.0f;
+      }
+      auto vertex = [&](int k) {
+        const size_t o = base + idx[k];
+        return ClipVertex{d.clip[o], d.world[o], d.normal[o], uv_of(idx[k])};
+      };
+      if (in_front) {
+        const WindowVertex wv[3] = {d.window[base + idx[0]], d.window[base + idx[1]],
+                                    d.window[base + idx[2]]};
+        emit(wv, vertex, data, pass.cull, f, d.triangles);
+        continue;
+      }
+      const ClipVertex v[3] = {vertex(0), vertex(1), vertex(2)};
+      ClipVertex clipped[6];
+      const int n = clip_near(v, clipped);
+      for (int c = 0; c < n; ++c) {
+        const ClipVertex* cv = clipped + c * 3;
+        const WindowVertex wv[3] = {to_window(cv[0].clip, f.width, f.height),
+                                    to_window(cv[1].clip, f.width, f.height),
+                                    to_window(cv[2].clip, f.width, f.height)};
+        emit(
+            wv, [cv](int k) { return cv[k]; }, data, pass.cull, f, d.triangles);
+      }
+    }
+  }
 }
 
 struct MeshTargets {
@@ -140,16 +232,26 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
   const double hi_y =
       std::min(double(height - 1 - t.y0), std::max({s.p[0].y, s.p[1].y, s.p[2].y}) - 0.5);
   const double area = edge(s.p[0], s.p[1], s.p[2]);
-  for (int wy = int(std::ceil(lo_y)); wy <= int(std::floor(hi_y)); ++wy)
+  // Edge k runs from vertex k + 1 to k + 2; edge(a, c, p) = ex * (p.y - a.y) - ey * (p.x - a.x)
+  // with its per-triangle and per-row parts computed once: the same operations on the same values.
+  double ax[3], ay[3], ex[3], ey[3], row[3];
+  bool tl[3];
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2& a = s.p[(k + 1) % 3];
+    const glm::dvec2& c = s.p[(k + 2) % 3];
+    ax[k] = a.x, ay[k] = a.y, ex[k] = c.x - a.x, ey[k] = c.y - a.y;
+    tl[k] = top_left(a, c);
+  }
+  for (int wy = int(std::ceil(lo_y)); wy <= int(std::floor(hi_y)); ++wy) {
+    const double centre_y = wy + 0.5;
+    for (int k = 0; k < 3; ++k) row[k] = ex[k] * (centre_y - ay[k]);
     for (int wx = int(std::ceil(lo_x)); wx <= int(std::floor(hi_x)); ++wx) {
-      const glm::dvec2 p(wx + 0.5, wy + 0.5);
+      const double centre_x = wx + 0.5;
       double b[3];
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k) {
-        const glm::dvec2& a = s.p[(k + 1) % 3];
-        const glm::dvec2& c = s.p[(k + 2) % 3];
-        b[k] = edge(a, c, p);
-        inside = b[k] > 0.0 || (b[k] == 0.0 && top_left(a, c));
+        b[k] = row[k] - ey[k] * (centre_x - ax[k]);
+        inside = b[k] > 0.0 || (b[k] == 0.0 && tl[k]);
       }
       if (!inside) continue;
       const double l0 = b[0] / area, l1 = b[1] / area, l2 = b[2] / area;
@@ -183,37 +285,34 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       px[2] = c.b;
       px[3] = c.a;
     }
+  }
 }
 
 // The triangles whose pixel bounds may touch each tile, in mesh order (so each pixel still sees
 // its fragments in the same order): a pass of many triangles (fur shells) then costs each tile only
 // its own triangles. The bounds are conservative; rasterise() clips exactly.
-std::vector<std::vector<unsigned>> bin_by_tile(const std::vector<ScreenTriangle>& triangles,
-                                               const FrameContext& f, int tile_size) {
+void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const FrameContext& f, int tile_size,
+                 std::vector<std::vector<unsigned>>& bins) {
   const int cols = (f.width + tile_size - 1) / tile_size;
   const int rows = (f.height + tile_size - 1) / tile_size;
-  std::vector<std::vector<unsigned>> bins(size_t(cols * rows));
+  bins.resize(size_t(cols * rows));
+  for (std::vector<unsigned>& b : bins) b.clear();
   for (size_t i = 0; i < triangles.size(); ++i) {
-    const glm::dvec2* p = triangles[i].p;
-    // Window rows run up, image rows down: image row y = height - 1 - window row.
-    const double lo_x = std::min({p[0].x, p[1].x, p[2].x}) - 1.0;
-    const double hi_x = std::max({p[0].x, p[1].x, p[2].x}) + 1.0;
-    const double lo_y = f.height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0);
-    const double hi_y = f.height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0);
-    if (hi_x < 0.0 || lo_x >= f.width || hi_y < 0.0 || lo_y >= f.height) continue;
-    const int c0 = int(std::max(lo_x, 0.0)) / tile_size;
-    const int c1 = std::min(cols - 1, int(std::min(hi_x, double(f.width - 1))) / tile_size);
-    const int r0 = int(std::max(lo_y, 0.0)) / tile_size;
-    const int r1 = std::min(rows - 1, int(std::min(hi_y, double(f.height - 1))) / tile_size);
+    const PixelBounds b = pixel_bounds(triangles[i].p, f.height);
+    if (b.off_frame(f.width, f.height)) continue;
+    const int c0 = int(std::max(b.lo_x, 0.0)) / tile_size;
+    const int c1 = std::min(cols - 1, int(std::min(b.hi_x, double(f.width - 1))) / tile_size);
+    const int r0 = int(std::max(b.lo_y, 0.0)) / tile_size;
+    const int r1 = std::min(rows - 1, int(std::min(b.hi_y, double(f.height - 1))) / tile_size);
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
   }
-  return bins;
 }
 
 }  // namespace
 
-void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
+void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets,
+                   MeshPassCache& cache) {
   if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
   if (!pass.shade && !pass.shade_depth)
     throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
@@ -223,11 +322,12 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
     out.test = pass.depth_test != DepthTest::Off;
     out.write_depth = pass.depth_test != DepthTest::TestOnly;
   }
-  const std::vector<ScreenTriangle> triangles = setup(pass, pc);
+  MeshPassCache::Data& d = cache.data();
+  setup(pass, pc, d);
   const FrameContext& f = pc.frame;
-  const std::vector<std::vector<unsigned>> bins = bin_by_tile(triangles, f, pc.tile_size);
+  bin_by_tile(d.triangles, f, pc.tile_size, d.bins);
   for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (unsigned i : bins[size_t(t.index)]) rasterise(triangles[i], pass, t, f.height, out);
+    for (unsigned i : d.bins[size_t(t.index)]) rasterise(d.triangles[i], pass, t, f.height, out);
   });
 }
 

@@ -7,12 +7,31 @@
 // correct; depth test LESS, cull by winding (counter-clockwise in window space = front), alpha
 // discard. Tiles run in parallel, each walking all triangles in mesh order, so every pixel sees
 // its fragments in the same order whatever the thread count.
+#include <memory>
+
 #include "backends/cpu/cpu_pass_context.h"
 #include "backends/cpu/cpu_targets.h"
 #include "render/frame_plan.h"
 
 namespace sdfreel {
 
-void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets);
+// What one mesh pass keeps from sample to sample of a frame: its vertices after the vertex stage
+// (world positions and normals do not depend on the sample offset, so `place` runs once per vertex
+// and frame, not per triangle corner and sample; the same function of the same inputs, so the
+// same bits) and its triangle buffers. Valid for one plan's pass for the duration of a frame.
+class MeshPassCache {
+ public:
+  struct Data;
+  MeshPassCache();
+  ~MeshPassCache();
+  MeshPassCache(MeshPassCache&&) noexcept;
+  Data& data() { return *data_; }
+
+ private:
+  std::unique_ptr<Data> data_;
+};
+
+void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets,
+                   MeshPassCache& cache);
 
 }  // namespace sdfreel

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "render/camera_lanes.h"
 #include "render/tiling.h"
 
 namespace sdfreel {
@@ -56,13 +57,15 @@ void tile_packets(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
   RayPassOutput result;
   for (int base = 0; base < n; base += LANES) {
     packet.count = n - base < LANES ? n - base : LANES;
+    F8 x, y;
     for (int i = 0; i < LANES; ++i) {
       const int k = base + (i < packet.count ? i : packet.count - 1);
-      const float x = float(t.x0 + k % tw) + pc.offset.x, y = float(t.y0 + k / tw) + pc.offset.y;
-      packet.dir.set_lane(i, primary_ray_dir(f.camera, x, y, f.width, f.height));
+      x[i] = float(t.x0 + k % tw) + pc.offset.x;
+      y[i] = float(t.y0 + k / tw) + pc.offset.y;
       result.keep[i] = false;
       result.depth[i] = 1.0f;
     }
+    packet.dir = primary_ray_dirs(f.camera, x, y, f.width, f.height);
     pass.packet(packet, result, stats);
     for (int i = 0; i < packet.count; ++i) {
       const int k = base + i;

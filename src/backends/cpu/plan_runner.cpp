@@ -21,13 +21,16 @@ void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum) {
 
 }  // namespace
 
-void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats) {
-  if (const auto* ray = std::get_if<RayPass>(&pass))
+void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats,
+              MeshPassCache* cache) {
+  if (const auto* ray = std::get_if<RayPass>(&pass)) {
     run_ray_pass(*ray, pc, targets, stats);
-  else if (const auto* mesh = std::get_if<MeshPass>(&pass))
-    run_mesh_pass(*mesh, pc, targets);
-  else
+  } else if (const auto* mesh = std::get_if<MeshPass>(&pass)) {
+    MeshPassCache fresh;
+    run_mesh_pass(*mesh, pc, targets, cache ? *cache : fresh);
+  } else {
     run_image_pass(std::get<ImagePass>(pass), pc, targets);
+  }
 }
 
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
@@ -49,11 +52,13 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
   LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
+  std::vector<MeshPassCache> caches(plan.passes.size());  // one per pass, for the frame
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
     if (live.round_ends_at(i) && live.decide(i, sum, sum_odd) == 0) break;
     pc.offset = ctx.sample_offsets[size_t(i)];
     targets.clear();
-    for (const Pass& pass : plan.passes) run_pass(pass, pc, targets, stats);
+    for (size_t p = 0; p < plan.passes.size(); ++p)
+      run_pass(plan.passes[p], pc, targets, stats, &caches[p]);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
     add_live(colour, live, sum);
     if (i & 1) add_live(colour, live, sum_odd);

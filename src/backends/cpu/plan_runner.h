@@ -5,6 +5,7 @@
 // (cpu_ray_pass_resolved.h); any other plan runs every pass over the whole frame for each sample
 // while any pixel is live and adds the sample only to live pixels, so image passes still read
 // every neighbour. Such plans get the same pictures, but save time only when every pixel stops.
+#include "backends/cpu/cpu_mesh_pass.h"
 #include "backends/cpu/cpu_pass_context.h"
 #include "backends/cpu/cpu_targets.h"
 #include "render/frame_context.h"
@@ -19,8 +20,10 @@ struct CpuRunSettings {
   bool packets = true;
 };
 
-// One pass of a plan into `targets`, by its kind.
-void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats);
+// One pass of a plan into `targets`, by its kind; `cache` (optional) is the pass's memory from the
+// frame's earlier samples (mesh passes: cpu_mesh_pass.h).
+void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats,
+              MeshPassCache* cache = nullptr);
 
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
                        RayStats& stats, SampleCounts* counts = nullptr);

@@ -1,5 +1,6 @@
 #include "render/passes/crepuscular_rays.h"
 
+#include "render/passes/crepuscular_rays_rows.h"
 #include "sdf/det_math.h"
 #include "sdf/noise.h"
 
@@ -68,6 +69,7 @@ ImagePass crepuscular_rays_pass(const CrepuscularRays& r, const std::string& occ
   p.pixel = [r](const ImageInputs& in, int x, int y) {
     return crepuscular_rays_pixel(r, in[0], x, y);
   };
+  p.rows = [r](const ImageInputs& in) { return crepuscular_rays_rows(r, in[0]); };
   return p;
 }
 

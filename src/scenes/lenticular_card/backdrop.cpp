@@ -11,6 +11,10 @@ constexpr float FLOOR_FADE = 4.0f;      // metres: the floor fades into the back
 constexpr float SHADOW_RADIUS = 0.35f;  // the stand's soft contact shadow
 constexpr float SHADOW_DEPTH = 0.55f;
 
+V3x8 mix3(const V3x8& x, const V3x8& y, F8 a) {
+  return x * (1.0f - a) + y * a;
+}
+
 }  // namespace
 
 glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask) {
@@ -23,6 +27,23 @@ glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask) {
   const float shadow = 1.0f - SHADOW_DEPTH * (1.0f - dm::smoothstep(0.0f, SHADOW_RADIUS, r));
   const glm::vec3 lit = FLOOR * ((0.3f + 0.9f * dm::max(light.y, 0.0f)) * shadow);
   return dm::mix(lit, wall, dm::smoothstep(0.0f, FLOOR_FADE, r));
+}
+
+V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask) {
+  if (hit_mask) return V3x8(glm::vec3(0.0f));
+  const V3x8& d = rays.dir;
+  const glm::vec3& o = rays.origin;
+  const F8 a = dm::smoothstep(-0.1f, 0.6f, d.y);
+  const V3x8 wall = WALL_LOW * (1.0f - a) + WALL_HIGH * a;
+  if (!(o.y > 0.0f)) return wall;
+  const M8 floor = d.y < 0.0f;
+  if (!any(floor)) return wall;
+  const F8 t = -o.y / d.y;
+  const F8 x = o.x + d.x * t, z = o.z + d.z * t;
+  const F8 r = dm::sqrt(x * x + z * z);
+  const F8 shadow = 1.0f - SHADOW_DEPTH * (1.0f - dm::smoothstep(0.0f, SHADOW_RADIUS, r));
+  const V3x8 lit = FLOOR * ((0.3f + 0.9f * dm::max(light.y, 0.0f)) * shadow);
+  return select(floor, mix3(lit, wall, dm::smoothstep(0.0f, FLOOR_FADE, r)), wall);
 }
 
 }  // namespace sdfreel::lenticular_card

@@ -10,5 +10,7 @@ namespace sdfreel::lenticular_card {
 
 // hit_mask: 0 (nothing marched here), as MarchSettings::hit_mask asks.
 glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask);
+// The same for a packet of eight rays from one origin, each lane the scalar function's bits.
+V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask);
 
 }  // namespace sdfreel::lenticular_card

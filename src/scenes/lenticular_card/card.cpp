@@ -2,6 +2,7 @@
 
 #include "scenes/lenticular_card/optics.h"
 #include "sdf/det_math.h"
+#include "sdf/lanes.h"
 
 namespace sdfreel::lenticular_card {
 namespace {
@@ -105,6 +106,30 @@ vec3 frontColour(const vec3& p, const vec3& d, const CardUniforms& u, const Card
   const vec3 h = normalize3(u.light + v);
   const float spec = SPECULAR * KEY * dm::pow(dm::max(dot3(n, h), 0.0f), SHININESS);
   return diffuse * (1.0f - fresnel) + (environment(r) * fresnel + vec3(spec)) * u.gloss;
+}
+
+M8 may_hit_card(const RayPacket& rays, const CardUniforms& u) {
+  const glm::mat4& m = u.world_to_local;
+  const vec3 o = to_local_point(m, rays.origin);
+  const V3x8& w = rays.dir;
+  const V3x8 d(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z,
+               m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
+               m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
+  // The card's and the stand's boxes together, grown by 1 cm plus 1e-5 of the origin's distance.
+  const float margin = 0.01f + 1e-5f * dm::max(dm::abs(o.x), dm::max(dm::abs(o.y), dm::abs(o.z)));
+  const vec3 lo(-CARD_HALF_WIDTH - margin, -margin, -BASE_HALF_DEPTH - margin);
+  const vec3 hi(CARD_HALF_WIDTH + margin, CARD_CENTRE_Y + CARD_HALF_HEIGHT + margin,
+                BASE_HALF_DEPTH + margin);
+  F8 t_near = splat(-BIG), t_far = splat(BIG);
+  const F8 dir[3] = {d.x, d.y, d.z};
+  for (int i = 0; i < 3; ++i) {
+    // Division by 0 gives infinities of one sign when the origin is outside the slab (a miss);
+    // NaN (origin on the slab's face) fails every comparison below, so the lane is kept.
+    const F8 t0 = (lo[i] - o[i]) / dir[i], t1 = (hi[i] - o[i]) / dir[i];
+    t_near = dm::max(t_near, dm::min(t0, t1));
+    t_far = dm::min(t_far, dm::max(t0, t1));
+  }
+  return ~((t_near > t_far) | (t_far < 0.0f));
 }
 
 bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, vec3& colour,

@@ -49,6 +49,11 @@ bool hitBox(const glm::vec3& o, const glm::vec3& d, const glm::vec3& c, const gl
 glm::vec3 frontColour(const glm::vec3& p, const glm::vec3& d, const CardUniforms& u,
                       const CardTextures& tex);
 
+// For a packet of world rays: false for lanes that surely miss the card and its stand (a slab test
+// against their common box grown by a margin far above float rounding), so only the other lanes
+// need shadeCard; the lanes it keeps are a superset of shadeCard's hits.
+M8 may_hit_card(const RayPacket& rays, const CardUniforms& u);
+
 // Shades one world ray: false on a miss; else the colour and the hit's t along the ray.
 bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, glm::vec3& colour,
                float& t);

@@ -80,9 +80,13 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrint
   pass.scalar = [shade](const Ray& ray, glm::vec3& colour, float& depth, bool& keep, RayStats&) {
     shade(ray, colour, depth, keep);
   };
-  pass.packet = [shade](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+  pass.packet = [shade, u](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+    const M8 maybe = may_hit_card(rays, u);
     for (int i = 0; i < rays.count; ++i)
-      shade(rays.ray(i), out.colour[i], out.depth[i], out.keep[i]);
+      if (lane(maybe, i))
+        shade(rays.ray(i), out.colour[i], out.depth[i], out.keep[i]);
+      else
+        out.keep[i] = false;  // what shadeCard says of a miss
   };
   plan.passes.push_back(std::move(pass));
 }

@@ -65,8 +65,9 @@ class LenticularCardScene : public Scene {
       keep = true;
     };
     back.packet = [light, mask](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+      const V3x8 colour = backdrop(rays, light, mask);
       for (int i = 0; i < rays.count; ++i) {
-        out.colour[i] = backdrop(rays.ray(i), light, mask);
+        out.colour[i] = colour.lane(i);
         out.keep[i] = true;
       }
     };
