@@ -8,7 +8,7 @@ namespace {
 
 const int MINIMUM_VALUES[] = {1, 2};
 const int MAXIMUM_VALUES[] = {16, 32};
-const float THRESHOLD_VALUES[] = {0.004f, 0.006f, 0.01f, 0.015f, 0.02f, 0.03f};
+const float THRESHOLD_VALUES[] = {0.006f, 0.01f, 0.015f, 0.02f, 0.025f, 0.03f};
 
 }  // namespace
 
