@@ -6,9 +6,9 @@ namespace sdfreel::bench {
 
 namespace {
 
-const int MINIMUM_VALUES[] = {2, 4};
-const int MAXIMUM_VALUES[] = {16, 64};
-const float THRESHOLD_VALUES[] = {0.002f, 0.003f, 0.004f, 0.006f, 0.01f};
+const int MINIMUM_VALUES[] = {1, 2};
+const int MAXIMUM_VALUES[] = {16, 32};
+const float THRESHOLD_VALUES[] = {0.006f, 0.01f, 0.015f, 0.02f, 0.025f, 0.03f};
 
 }  // namespace
 

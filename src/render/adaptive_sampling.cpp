@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 namespace sdfreel {
 
@@ -25,22 +24,30 @@ int next_round_end(const AdaptiveSampling& a, int taken) {
   return std::min(taken + ADAPTIVE_ROUND, a.maximum);
 }
 
-float adaptive_error(int taken, const glm::vec3& sum, const glm::vec3& sum_odd) {
-  if (taken < 2) return std::numeric_limits<float>::infinity();
-  const float inv_even = 1.0f / float((taken + 1) / 2), inv_odd = 1.0f / float(taken / 2);
-  float err = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    const float even = (sum[c] - sum_odd[c]) * inv_even, odd = sum_odd[c] * inv_odd;
-    err = std::max(err, std::fabs(display_curve(even) - display_curve(odd)));
-  }
-  return 0.5f * err;
+glm::vec3 display_value(const glm::vec3& mean) {
+  return glm::vec3(display_curve(mean.x), display_curve(mean.y), display_curve(mean.z));
 }
 
-bool needs_more_samples(const AdaptiveSampling& a, int taken, const glm::vec3& sum,
-                        const glm::vec3& sum_odd) {
+float display_difference(const glm::vec3& a, const glm::vec3& b) {
+  return std::max(std::fabs(a.x - b.x), std::max(std::fabs(a.y - b.y), std::fabs(a.z - b.z)));
+}
+
+float own_error(int taken, const glm::vec3& sum, const glm::vec3& sum_odd) {
+  if (taken < 2) return 0.0f;
+  const float inv_even = 1.0f / float((taken + 1) / 2), inv_odd = 1.0f / float(taken / 2);
+  const glm::vec3 even = display_value((sum - sum_odd) * inv_even);
+  const glm::vec3 odd = display_value(sum_odd * inv_odd);
+  return 0.5f * display_difference(even, odd);
+}
+
+float edge_error(int taken, float contrast) {
+  return EDGE_WEIGHT * contrast / float(taken);
+}
+
+bool needs_more_samples(const AdaptiveSampling& a, int taken, float error) {
   if (taken >= a.maximum) return false;
   if (taken < a.minimum) return true;
-  return !(adaptive_error(taken, sum, sum_odd) < a.threshold);
+  return !(error < a.threshold);
 }
 
 std::string adaptive_text(const AdaptiveSampling& a) {

@@ -1,5 +1,7 @@
 #include "render/live_pixels.h"
 
+#include <algorithm>
+
 namespace sdfreel {
 
 namespace {
@@ -12,26 +14,48 @@ glm::vec3 rgb(const float* p) {
 
 LivePixels::LivePixels(const AdaptiveSampling& a, int width, int height)
     : a_(a),
+      width_(width),
+      height_(height),
       next_end_(first_round_samples(a)),
       live_(size_t(width) * height, 1),
-      taken_(size_t(width) * height, uint16_t(a.maximum)) {}
+      taken_(size_t(width) * height, uint16_t(a.maximum)),
+      display_(size_t(width) * height) {}
 
 bool LivePixels::round_ends_at(int taken) const {
   return taken == next_end_ && taken < a_.maximum;
 }
 
+float LivePixels::contrast(int x, int y) const {
+  const glm::vec3& centre = display_[size_t(y) * width_ + x];
+  float c = 0.0f;
+  for (int j = std::max(y - 1, 0); j <= std::min(y + 1, height_ - 1); ++j)
+    for (int i = std::max(x - 1, 0); i <= std::min(x + 1, width_ - 1); ++i)
+      c = std::max(c, display_difference(centre, display_[size_t(j) * width_ + i]));
+  return c;
+}
+
 int LivePixels::decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd) {
   next_end_ = next_round_end(a_, taken);
+  const float inv_taken = 1.0f / float(taken);
+  for (size_t i = 0; i < live_.size(); ++i)
+    if (live_[i]) display_[i] = display_value(rgb(&sum.pixels[i * 4]) * inv_taken);
+  // Decisions read only the display values of finished rounds, never which pixels stopped in
+  // this pass.
   int live = 0;
-  for (size_t i = 0; i < live_.size(); ++i) {
-    if (!live_[i]) continue;
-    if (needs_more_samples(a_, taken, rgb(&sum.pixels[i * 4]), rgb(&sum_odd.pixels[i * 4]))) {
-      ++live;
-    } else {
-      live_[i] = 0;
-      taken_[i] = uint16_t(taken);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      const size_t i = size_t(y) * width_ + x;
+      if (!live_[i]) continue;
+      const float error =
+          std::max(own_error(taken, rgb(&sum.pixels[i * 4]), rgb(&sum_odd.pixels[i * 4])),
+                   edge_error(taken, contrast(x, y)));
+      if (needs_more_samples(a_, taken, error)) {
+        ++live;
+      } else {
+        live_[i] = 0;
+        taken_[i] = uint16_t(taken);
+      }
     }
-  }
   return live;
 }
 

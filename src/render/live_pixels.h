@@ -1,8 +1,8 @@
 #pragma once
-// Adaptive sampling over a whole frame, for runners that take one sample of every pixel at a
-// time (the CPU's per-sample plan loop, the GL runner): every live pixel has taken the same
-// samples, so at the end of each round (render/adaptive_sampling.h) one pass over the frame's
-// sums decides which pixels go on.
+// Adaptive sampling over a whole frame (render/adaptive_sampling.h): every live pixel has taken
+// the same samples, so at the end of each round one pass over the frame's finished sums decides
+// which pixels go on. The CPU's resolved ray pass, its per-sample plan loop and the GL runner all
+// decide here, from the same float sums: the same pixels stop on every backend.
 #include <cstdint>
 #include <vector>
 
@@ -17,20 +17,26 @@ using SampleCounts = std::vector<uint16_t>;
 class LivePixels {
  public:
   LivePixels(const AdaptiveSampling& a, int width, int height);
+  // The sample count at which the current round ends.
+  int round_end() const { return next_end_; }
   // True when a round ends after sample `taken` (a count), so decide() is due.
   bool round_ends_at(int taken) const;
-  // After `taken` samples summed into `sum` and `sum_odd` (odd list positions only): pixels that
-  // need no more stop. Returns how many pixels are still live.
+  // After `taken` samples summed into `sum` and `sum_odd` (odd list positions only; stopped
+  // pixels keep the sums they stopped with): pixels that need no more stop. Returns how many
+  // pixels are still live.
   int decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd);
   bool live(size_t pixel) const { return live_[pixel] != 0; }
   const std::vector<uint8_t>& mask() const { return live_; }
   const SampleCounts& counts() const { return taken_; }
 
  private:
+  float contrast(int x, int y) const;
+
   AdaptiveSampling a_;
-  int next_end_;
+  int width_, height_, next_end_;
   std::vector<uint8_t> live_;
-  SampleCounts taken_;  // `maximum` until the pixel stops
+  SampleCounts taken_;              // `maximum` until the pixel stops
+  std::vector<glm::vec3> display_;  // each pixel's mean at its last round, display values
 };
 
 // The frame: each pixel's sum times 1 / its count (as fixed sampling's 1 / count), alpha 1.

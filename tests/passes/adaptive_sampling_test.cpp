@@ -1,9 +1,11 @@
 // Per-pixel adaptive sampling on the CPU (render/adaptive_sampling.h): the frame and the samples
 // each pixel took do not depend on threads, tiles, packets or the runner's path; threshold 0 is
-// fixed sampling at the maximum; a flat frame stops at the minimum everywhere; a pixel whose
-// samples keep disagreeing runs to the maximum.
+// fixed sampling at the maximum; a flat frame stops at the minimum everywhere; a sub-pixel star
+// runs to the maximum and its neighbours take more than the minimum.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 #include "backends/cpu/plan_runner.h"
@@ -78,7 +80,8 @@ Rendered run(const FramePlan& plan, const FrameContext& ctx, CpuRunSettings s) {
 void expect_every_way_gives(const FramePlan& plan, const FrameContext& ctx, const Rendered& want,
                             const std::string& what) {
   const Rendered ways[] = {run(plan, ctx, {1, 16, true}), run(plan, ctx, {2, 7, true}),
-                      run(plan, ctx, {2, 5, false}), run(with_side_pass(plan), ctx, {2, 16, true})};
+                           run(plan, ctx, {2, 5, false}),
+                           run(with_side_pass(plan), ctx, {2, 16, true})};
   for (const Rendered& r : ways) {
     EXPECT_EQ(r.image.pixels, want.image.pixels) << what;
     EXPECT_EQ(r.counts, want.counts) << what;
@@ -100,30 +103,48 @@ TEST(AdaptiveSampling, FlatFrameStopsAtTheMinimumEverywhere) {
   expect_every_way_gives(plan, ctx, r, "flat");
 }
 
-// Even samples all at one offset, odd samples at another: where the two rays' colours differ
-// the halves never agree, so the pixel runs to the maximum; elsewhere it stops at the minimum.
-TEST(AdaptiveSampling, PixelsThatNeverConvergeStopAtTheMaximum) {
-  const int w = 23, h = 11;
-  FrameContext ctx = adaptive_context(w, h, {true, 2, 12, 0.01f});
-  const glm::vec2 a(0.2f, 0.3f), b(0.7f, 0.8f);
-  for (size_t i = 0; i < ctx.sample_offsets.size(); ++i) ctx.sample_offsets[i] = i & 1 ? b : a;
-  const FramePlan plan = plan_of(test_pass(false));
+// A sub-pixel star: one bright point that only sample 1 of pixel (9, 5) hits. That pixel's
+// halves never agree, so it runs to the maximum; its neighbours' own samples all miss, yet they
+// differ from it and take more than the minimum (the edge estimate); the rest of the frame is
+// flat and stops at the minimum.
+TEST(AdaptiveSampling, SubPixelStarRunsToTheMaximum) {
+  const int w = 23, h = 11, sx = 9, sy = 5;
+  const FrameContext ctx = adaptive_context(w, h, {true, 2, 12, 0.01f});
+  const glm::vec2 o = ctx.sample_offsets[1];
+  const glm::vec3 star = primary_ray_dir(ctx.camera, float(sx) + o.x, float(sy) + o.y, w, h);
+  const float radius = glm::length(
+      primary_ray_dir(ctx.camera, float(sx) + o.x + 0.05f, float(sy) + o.y, w, h) - star);
+  RayPass pass = test_pass(true);
+  auto colour = [star, radius](const glm::vec3& d) {
+    return glm::length(d - star) < radius ? glm::vec3(100.0f) : glm::vec3(0.1f);
+  };
+  pass.packet = [colour](const RayPacket& r, RayPassOutput& out, RayStats&) {
+    for (int i = 0; i < r.count; ++i) {
+      out.colour[i] = colour(r.dir.lane(i));
+      out.keep[i] = true;
+    }
+  };
+  pass.scalar = [colour](const Ray& r, glm::vec3& c, float&, bool& keep, RayStats&) {
+    c = colour(r.dir);
+    keep = true;
+  };
+  const FramePlan plan = plan_of(pass);
   const Rendered r = run(plan, ctx, {2, 16, true});
-  int at_max = 0, at_min = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const auto colour = [&](glm::vec2 o) {
-        return hashed(primary_ray_dir(ctx.camera, float(x) + o.x, float(y) + o.y, w, h));
-      };
-      const bool differ = colour(a) != colour(b);
-      const int n = r.counts[size_t(y) * w + x];
-      EXPECT_EQ(n, differ ? 12 : 2) << x << "," << y;
-      (differ ? at_max : at_min) += 1;
-      EXPECT_EQ(r.image.at(x, y)[0], differ ? 0.5f : colour(a).x) << x << "," << y;
+      const int n = r.counts[size_t(y) * w + x],
+                ring = std::max(std::abs(x - sx), std::abs(y - sy));
+      if (ring == 0) {
+        EXPECT_EQ(n, 12);
+        EXPECT_NEAR(r.image.at(x, y)[0], (100.0f + 11 * 0.1f) / 12.0f, 1e-4f);
+      } else if (ring == 1) {
+        EXPECT_GT(n, 2) << x << "," << y;
+        EXPECT_NEAR(r.image.at(x, y)[0], 0.1f, 1e-6f) << x << "," << y;
+      } else {
+        EXPECT_EQ(n, 2) << x << "," << y;
+      }
     }
-  EXPECT_GT(at_max, w * h / 4);
-  EXPECT_GT(at_min, w * h / 4);
-  expect_every_way_gives(plan, ctx, r, "two offsets");
+  expect_every_way_gives(plan, ctx, r, "star");
 }
 
 FrameContext scene_context(const SceneInfo& info, int samples, AdaptiveSampling a) {

@@ -1,5 +1,6 @@
 #include "backends/cpu/cpu_ray_pass_resolved.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "render/tiling.h"
@@ -15,34 +16,34 @@ const RayPass* resolvable_ray_pass(const FramePlan& plan) {
 
 namespace {
 
-struct PixelSums {
-  glm::vec3 sum{0.0f}, odd{0.0f};  // all samples; those at odd list positions
-  int taken = 0;
-  bool live = true;
-};
+// Pairs a chunk holds at least (whole pixels, so a pixel's samples stay in one chunk and are
+// summed in list order): enough packets to amortise a task, few enough to balance threads.
+constexpr int CHUNK_PAIRS = 512;
 
 struct SamplePair {
-  int pixel, sample;  // pixel index in the tile, sample index in the list
+  int pixel, sample;  // pixel index in the frame, sample index in the list
 };
 
-// Traces the pairs eight at a time (the last packet padded with its last ray) and adds each
-// result to its pixel's sums. Pairs come pixel by pixel, samples in list order, so every pixel's
-// samples are summed in list order.
-void trace_pairs(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
-                 const std::vector<SamplePair>& pairs, const glm::vec3& clear,
-                 std::vector<PixelSums>& px, RayStats& stats) {
+struct Sums {
+  ImageRGBA all, odd;  // all samples; those at odd list positions
+};
+
+// Traces pairs [from, to) eight at a time (the last packet padded with its last ray) and adds each
+// result to its pixel's sums.
+void trace_pairs(const RayPass& pass, const CpuPassContext& pc,
+                 const std::vector<SamplePair>& pairs, int from, int to, const glm::vec3& clear,
+                 Sums& sums, RayStats& stats) {
   const FrameContext& f = pc.frame;
-  const int tw = t.x1 - t.x0, n = int(pairs.size());
   RayPacket packet;
   packet.origin = f.camera.origin;
   packet.pixel_angle = pc.pixel_angle;
   RayPassOutput result;
-  for (int base = 0; base < n; base += LANES) {
-    packet.count = n - base < LANES ? n - base : LANES;
+  for (int base = from; base < to; base += LANES) {
+    packet.count = to - base < LANES ? to - base : LANES;
     for (int i = 0; i < LANES; ++i) {
       const SamplePair& p = pairs[size_t(base + (i < packet.count ? i : packet.count - 1))];
       const glm::vec2& o = f.sample_offsets[size_t(p.sample)];
-      const float x = float(t.x0 + p.pixel % tw) + o.x, y = float(t.y0 + p.pixel / tw) + o.y;
+      const float x = float(p.pixel % f.width) + o.x, y = float(p.pixel / f.width) + o.y;
       packet.dir.set_lane(i, primary_ray_dir(f.camera, x, y, f.width, f.height));
       result.keep[i] = false;
       result.depth[i] = 1.0f;
@@ -51,49 +52,51 @@ void trace_pairs(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
     for (int i = 0; i < packet.count; ++i) {
       const SamplePair& p = pairs[size_t(base + i)];
       const glm::vec3 c = result.keep[i] ? result.colour[i] : clear;
-      PixelSums& s = px[size_t(p.pixel)];
-      s.sum += c;
-      if (p.sample & 1) s.odd += c;
+      float* s = &sums.all.pixels[size_t(p.pixel) * 4];
+      s[0] += c.x;
+      s[1] += c.y;
+      s[2] += c.z;
+      if (p.sample & 1) {
+        float* o = &sums.odd.pixels[size_t(p.pixel) * 4];
+        o[0] += c.x;
+        o[1] += c.y;
+        o[2] += c.z;
+      }
     }
   }
 }
 
-void add_pairs(int pixel, int from, int to, std::vector<SamplePair>& pairs) {
-  for (int s = from; s < to; ++s) pairs.push_back({pixel, s});
+// The frame's pixels tile by tile (row-major inside a tile): neighbouring rays share packets.
+std::vector<int> pixels_by_tile(int width, int height, int tile_size) {
+  std::vector<int> order;
+  order.reserve(size_t(width) * height);
+  for (int ty = 0; ty < height; ty += tile_size)
+    for (int tx = 0; tx < width; tx += tile_size)
+      for (int y = ty; y < std::min(height, ty + tile_size); ++y)
+        for (int x = tx; x < std::min(width, tx + tile_size); ++x) order.push_back(y * width + x);
+  return order;
 }
 
-void tile_resolved(const RayPass& pass, const CpuPassContext& pc, const AdaptiveSampling& a,
-                   const Tile& t, const glm::vec3& clear, ImageRGBA& img, SampleCounts* counts,
-                   RayStats& stats) {
-  const int tw = t.x1 - t.x0, th = t.y1 - t.y0, n_pixels = tw * th;
-  std::vector<PixelSums> px(static_cast<size_t>(n_pixels));
+// One round: samples [from, to) of every live pixel, in chunks of whole pixels across threads.
+void run_round(const RayPass& pass, const CpuPassContext& pc, const std::vector<int>& order,
+               const LivePixels& live, int from, int to, const glm::vec3& clear, Sums& sums,
+               RayStats& stats) {
   std::vector<SamplePair> pairs;
-  int end = first_round_samples(a);
-  for (int p = 0; p < n_pixels; ++p) add_pairs(p, 0, end, pairs);
-  while (!pairs.empty()) {
-    trace_pairs(pass, pc, t, pairs, clear, px, stats);
-    pairs.clear();
-    const int next = next_round_end(a, end);
-    for (int p = 0; p < n_pixels; ++p) {
-      PixelSums& s = px[size_t(p)];
-      if (!s.live) continue;
-      s.taken = end;
-      s.live = needs_more_samples(a, end, s.sum, s.odd);
-      if (s.live) add_pairs(p, end, next, pairs);
-    }
-    end = next;
+  std::vector<int> chunk_starts;
+  for (int pixel : order) {
+    if (!live.live(size_t(pixel))) continue;
+    if (chunk_starts.empty() || int(pairs.size()) - chunk_starts.back() >= CHUNK_PAIRS)
+      chunk_starts.push_back(int(pairs.size()));
+    for (int s = from; s < to; ++s) pairs.push_back({pixel, s});
   }
-  for (int j = 0; j < th; ++j)
-    for (int i = 0; i < tw; ++i) {
-      const PixelSums& s = px[size_t(j) * tw + i];
-      const float inv_samples = 1.0f / float(s.taken);
-      float* p = img.at(t.x0 + i, t.y0 + j);
-      p[0] = s.sum.x * inv_samples;
-      p[1] = s.sum.y * inv_samples;
-      p[2] = s.sum.z * inv_samples;
-      p[3] = 1.0f;
-      if (counts) (*counts)[size_t(t.y0 + j) * img.width + t.x0 + i] = uint16_t(s.taken);
-    }
+  const int chunks = int(chunk_starts.size());
+  chunk_starts.push_back(int(pairs.size()));
+  std::vector<RayStats> chunk_stats(static_cast<size_t>(chunks));
+  for_each_tile(chunks, 1, 1, pc.threads, [&](const Tile& t) {
+    trace_pairs(pass, pc, pairs, chunk_starts[size_t(t.x0)], chunk_starts[size_t(t.x0) + 1], clear,
+                sums, chunk_stats[size_t(t.x0)]);
+  });
+  for (const RayStats& s : chunk_stats) stats.add(s);
 }
 
 }  // namespace
@@ -102,14 +105,18 @@ ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
                                 const glm::vec4& clear, RayStats& stats, SampleCounts* counts) {
   const FrameContext& f = pc.frame;
   const AdaptiveSampling a = sampling_of(f);
-  ImageRGBA img(f.width, f.height);
-  if (counts) counts->assign(size_t(f.width) * f.height, 0);
-  std::vector<RayStats> tile_stats(size_t(tile_count(f.width, f.height, pc.tile_size)));
-  for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    tile_resolved(pass, pc, a, t, glm::vec3(clear), img, counts, tile_stats[size_t(t.index)]);
-  });
-  for (const RayStats& s : tile_stats) stats.add(s);
-  return img;
+  Sums sums{ImageRGBA(f.width, f.height), ImageRGBA(f.width, f.height)};
+  LivePixels live(a, f.width, f.height);
+  const std::vector<int> order = pixels_by_tile(f.width, f.height, pc.tile_size);
+  for (int from = 0;;) {
+    const int to = live.round_end();
+    run_round(pass, pc, order, live, from, to, glm::vec3(clear), sums, stats);
+    from = to;
+    if (to >= a.maximum || live.decide(to, sums.all, sums.odd) == 0) break;
+  }
+  normalise_sums(sums.all, live.counts());
+  if (counts) *counts = live.counts();
+  return std::move(sums.all);
 }
 
 }  // namespace sdfreel
