@@ -62,11 +62,16 @@ double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc) {
+// Clip space of the pass: its own view, or the plan's camera moved by the sample offset.
+glm::mat4 view_projection(const MeshPass& pass, const CpuPassContext& pc) {
+  if (pass.view) return pass.view->projection * pass.view->view;
+  return sample_projection(pc.camera, pc.offset, pc.frame.width, pc.frame.height) * pc.camera.view;
+}
+
+std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc,
+                                  const glm::ivec2& size) {
   const TriangleMesh& m = *pass.mesh;
-  const FrameContext& f = pc.frame;
-  const glm::mat4 view_proj =
-      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
+  const glm::mat4 view_proj = view_projection(pass, pc);
   std::vector<ScreenTriangle> out;
   for (const MeshInstance& inst : pass.instances) {
     const glm::mat3 normal_matrix(inst.model);
@@ -99,8 +104,8 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
         for (int k = 0; k < 3; ++k) {
           const ClipVertex& cv = clipped[c * 3 + k];
           const double w = cv.clip.w;
-          s.p[k] = glm::dvec2((cv.clip.x / w * 0.5 + 0.5) * f.width,
-                              (cv.clip.y / w * 0.5 + 0.5) * f.height);
+          s.p[k] = glm::dvec2((cv.clip.x / w * 0.5 + 0.5) * size.x,
+                              (cv.clip.y / w * 0.5 + 0.5) * size.y);
           s.inv_w[k] = 1.0 / w;
           s.depth[k] = cv.clip.z / w * 0.5 + 0.5;
           s.v[k] = cv;
@@ -125,9 +130,10 @@ std::vector<ScreenTriangle> setup(const MeshPass& pass, const CpuPassContext& pc
 }
 
 struct MeshTargets {
-  ImageRGBA* colour;
-  ImageRGBA* depth;  // null: none
+  ImageRGBA* colour;  // null: depth only
+  ImageRGBA* depth;   // null: none
   bool test, write_depth;
+  const ImageInputs* inputs;
 };
 
 void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int height,
@@ -158,6 +164,10 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       const int x = wx, y = height - 1 - wy;
       const bool late = bool(pass.shade_depth);
       if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
+      if (!late && !pass.shade) {  // depth only, nothing to discard
+        if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+        continue;
+      }
       // Perspective-correct varyings.
       const double q0 = l0 * s.inv_w[0], q1 = l1 * s.inv_w[1], q2 = l2 * s.inv_w[2];
       const double qs = q0 + q1 + q2;
@@ -168,6 +178,7 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       frag.uv = s.v[0].uv * w0 + s.v[1].uv * w1 + s.v[2].uv * w2;
       frag.instance_data = s.data;
       frag.front_facing = s.front;
+      frag.inputs = out.inputs;
       glm::vec4 c;
       if (late) {
         if (!pass.shade_depth(frag, c, z)) continue;
@@ -177,6 +188,7 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       }
       if (c.a < pass.alpha_cutoff) continue;
       if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+      if (!out.colour) continue;
       float* px = out.colour->at(x, y);
       px[0] = c.r;
       px[1] = c.g;
@@ -189,22 +201,23 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
 // its fragments in the same order): a pass of many triangles (fur shells) then costs each tile only
 // its own triangles. The bounds are conservative; rasterise() clips exactly.
 std::vector<std::vector<unsigned>> bin_by_tile(const std::vector<ScreenTriangle>& triangles,
-                                               const FrameContext& f, int tile_size) {
-  const int cols = (f.width + tile_size - 1) / tile_size;
-  const int rows = (f.height + tile_size - 1) / tile_size;
+                                               const glm::ivec2& size, int tile_size) {
+  const int width = size.x, height = size.y;
+  const int cols = (width + tile_size - 1) / tile_size;
+  const int rows = (height + tile_size - 1) / tile_size;
   std::vector<std::vector<unsigned>> bins(size_t(cols * rows));
   for (size_t i = 0; i < triangles.size(); ++i) {
     const glm::dvec2* p = triangles[i].p;
     // Window rows run up, image rows down: image row y = height - 1 - window row.
     const double lo_x = std::min({p[0].x, p[1].x, p[2].x}) - 1.0;
     const double hi_x = std::max({p[0].x, p[1].x, p[2].x}) + 1.0;
-    const double lo_y = f.height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0);
-    const double hi_y = f.height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0);
-    if (hi_x < 0.0 || lo_x >= f.width || hi_y < 0.0 || lo_y >= f.height) continue;
+    const double lo_y = height - 1 - (std::max({p[0].y, p[1].y, p[2].y}) + 1.0);
+    const double hi_y = height - 1 - (std::min({p[0].y, p[1].y, p[2].y}) - 1.0);
+    if (hi_x < 0.0 || lo_x >= width || hi_y < 0.0 || lo_y >= height) continue;
     const int c0 = int(std::max(lo_x, 0.0)) / tile_size;
-    const int c1 = std::min(cols - 1, int(std::min(hi_x, double(f.width - 1))) / tile_size);
+    const int c1 = std::min(cols - 1, int(std::min(hi_x, double(width - 1))) / tile_size);
     const int r0 = int(std::max(lo_y, 0.0)) / tile_size;
-    const int r1 = std::min(rows - 1, int(std::min(hi_y, double(f.height - 1))) / tile_size);
+    const int r1 = std::min(rows - 1, int(std::min(hi_y, double(height - 1))) / tile_size);
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
   }
@@ -215,19 +228,34 @@ std::vector<std::vector<unsigned>> bin_by_tile(const std::vector<ScreenTriangle>
 
 void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets) {
   if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
-  if (!pass.shade && !pass.shade_depth)
+  if (!pass.shade && !pass.shade_depth && !pass.colour.empty())
     throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
-  MeshTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
+  MeshTargets out{pass.colour.empty() ? nullptr : &targets.get(pass.colour, pass.name), nullptr,
+                  false, false, nullptr};
   if (!pass.depth.empty()) {
     out.depth = &targets.get(pass.depth, pass.name);
     out.test = pass.depth_test != DepthTest::Off;
     out.write_depth = pass.depth_test != DepthTest::TestOnly;
   }
-  const std::vector<ScreenTriangle> triangles = setup(pass, pc);
-  const FrameContext& f = pc.frame;
-  const std::vector<std::vector<unsigned>> bins = bin_by_tile(triangles, f, pc.tile_size);
-  for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (unsigned i : bins[size_t(t.index)]) rasterise(triangles[i], pass, t, f.height, out);
+  if (!out.colour && !out.depth)
+    throw std::runtime_error("mesh pass '" + pass.name + "' writes no target");
+  ImageInputs inputs;
+  for (const ImageInput& in : pass.inputs) {
+    if (in.target == pass.colour || in.target == pass.depth)
+      throw std::runtime_error("mesh pass '" + pass.name + "' reads its own target '" + in.target +
+                               "'");
+    inputs.images.push_back(&targets.get(in.target, pass.name));
+  }
+  out.inputs = &inputs;
+  const ImageRGBA& drawn = out.colour ? *out.colour : *out.depth;
+  if (out.colour && out.depth &&
+      (out.depth->width != drawn.width || out.depth->height != drawn.height))
+    throw std::runtime_error("mesh pass '" + pass.name + "': colour and depth sizes differ");
+  const glm::ivec2 size(drawn.width, drawn.height);
+  const std::vector<ScreenTriangle> triangles = setup(pass, pc, size);
+  const std::vector<std::vector<unsigned>> bins = bin_by_tile(triangles, size, pc.tile_size);
+  for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {
+    for (unsigned i : bins[size_t(t.index)]) rasterise(triangles[i], pass, t, size.y, out);
   });
 }
 
