@@ -106,8 +106,9 @@ struct PassView {
   glm::mat4 view{1.0f}, projection{1.0f};
 };
 
-// An input of a pass: a target read through `sampler` (GL: texelFetch, row 0 at the bottom as GL
-// stores it; the CPU's ImageRGBA rows run top-down, so CPU code reads row height - 1 - y).
+// An input of a pass: a target read through `sampler` with texelFetch on GL. Image passes read
+// image rows top-down on both backends (their shaders flip); a mesh pass reading texel (x, y) as
+// GL stores it (row 0 at the bottom) reads the CPU image's row height - 1 - y.
 struct ImageInput {
   std::string target;
   std::string sampler;
