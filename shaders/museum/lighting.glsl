@@ -1,18 +1,13 @@
 // Light of the museum hall: the twin of src/scenes/museum/lighting.cpp (same constants and
-// operations; see there for the model) and the hall's layout constants of hall_layout.h.
+// operations; see there for the model), the sun shadowed through its map (museum/sun_shadow.glsl).
 #include "common/frame.glsl"
 #include "common/noise.glsl"
+#include "museum/sun_shadow.glsl"
 
-const float ROOM_X = 6.0;
-const float WALL = 0.2;
-const float WINDOW_Y0 = 1.5, WINDOW_Y1 = 3.5;
-const float WINDOW_Z0 = -1.3, WINDOW_Z1 = 1.3;
-const float MULLION_Y = 2.5, MULLION_Z = 0.0, MULLION_HALF = 0.05;
 const float MATERIAL_FLOOR = 2.0;
 
 const vec3 TO_SUN = vec3(-0.868287, 0.434143, 0.239994);
 const vec3 SUN_RADIANCE = vec3(3.4, 3.1, 2.6);
-const int MAX_OCCLUDERS = 8;
 
 const vec3 SKY_ZENITH = vec3(0.12, 0.26, 0.6);
 const vec3 SKY_HORIZON = vec3(0.55, 0.6, 0.68);
@@ -24,48 +19,13 @@ const vec3 FROM_WINDOW = vec3(-0.957826, 0.287348, 0.0);
 const float SUN_DISC_COS0 = 0.9994, SUN_DISC_COS1 = 0.9997;
 const float SUN_DISC = 40.0;
 const float SUN_GLOW = 0.5;
-const float PENUMBRA_PER_M = 0.0093;
-const float PENUMBRA_MIN = 0.002;
 const float SPECULAR_F0 = 0.04;
 const float FLOOR_ROUGHNESS = 0.45;
 const float PLANK_W = 0.2, PLANK_L = 1.2, SEAM = 0.03;
 const uint PLANK_SEED = 7u;
 const float NORMAL_OFFSET = 0.002;
 
-uniform vec3 u_occluder_lo[MAX_OCCLUDERS];
-uniform vec3 u_occluder_hi[MAX_OCCLUDERS];
-uniform int u_occluder_count;
 uniform vec3 u_eye;
-
-float window_opening(vec3 q) {
-  precise float rect = dm_min(dm_min(q.y - WINDOW_Y0, WINDOW_Y1 - q.y),
-                              dm_min(q.z - WINDOW_Z0, WINDOW_Z1 - q.z));
-  precise float bars =
-      dm_min(abs(q.y - MULLION_Y) - MULLION_HALF, abs(q.z - MULLION_Z) - MULLION_HALF);
-  return dm_min(rect, bars);
-}
-
-float through_plane(vec3 p, float plane_x) {
-  precise float t = dm_max((plane_x - p.x) / TO_SUN.x, 0.0);
-  precise vec3 q = p + TO_SUN * t;
-  precise float w = PENUMBRA_PER_M * t + PENUMBRA_MIN;
-  return dm_clamp(0.5 + window_opening(q) / w, 0.0, 1.0);
-}
-
-bool blocks(vec3 p, vec3 lo, vec3 hi) {
-  precise float t0 = 0.0, t1 = 1e30;
-  for (int k = 0; k < 3; ++k) {
-    if (TO_SUN[k] == 0.0) {
-      if (p[k] < lo[k] || p[k] > hi[k]) return false;
-      continue;
-    }
-    precise float inv = 1.0 / TO_SUN[k];
-    precise float a = (lo[k] - p[k]) * inv, c = (hi[k] - p[k]) * inv;
-    t0 = dm_max(t0, dm_min(a, c));
-    t1 = dm_min(t1, dm_max(a, c));
-  }
-  return t0 < t1;
-}
 
 float power_of_two_power(float x, int k) {
   precise float y = x;
@@ -83,15 +43,10 @@ vec3 floor_albedo(vec3 p, vec3 albedo) {
   return albedo * (tint * seam);
 }
 
-float sun_visibility(vec3 p) {
-  precise float inner = through_plane(p, -ROOM_X);
-  if (!(inner > 0.0)) return 0.0;
-  precise float vis = dm_min(inner, through_plane(p, -ROOM_X - WALL));
-  for (int i = 0; i < MAX_OCCLUDERS; ++i) {
-    if (i >= u_occluder_count) break;
-    if (blocks(p, u_occluder_lo[i], u_occluder_hi[i])) return 0.0;
-  }
-  return vis;
+// The twin of sun_visibility() with a map (the GL frame always has one).
+float sun_visibility(vec3 p, vec3 n, float ndl) {
+  precise vec3 q = p + n * NORMAL_OFFSET;
+  return sun_map_visibility(q, ndl);
 }
 
 vec3 sky(vec3 d) {
@@ -113,7 +68,7 @@ vec3 hall_radiance(vec3 p, vec3 normal, vec3 albedo_in, float material) {
   precise float ndl = dm_dot(n, TO_SUN);
   precise vec3 direct = vec3(0.0);
   if (ndl > 0.0) {
-    precise float vis = sun_visibility(p + n * NORMAL_OFFSET);
+    precise float vis = sun_visibility(p, n, ndl);
     if (vis > 0.0) {
       precise vec3 hv = TO_SUN + v;
       precise vec3 h = hv / sqrt(dm_dot(hv, hv));

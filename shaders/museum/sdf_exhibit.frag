@@ -6,8 +6,8 @@
 #include "sdf_morph/shading.glsl"
 #include "museum/lighting.glsl"
 #include "museum/probe.glsl"
+#include "museum/exhibit_bound.glsl"
 
-const float MIN_EPS = 1e-4;
 const float NORMAL_EPS = 1e-3;
 
 uniform MorphUniforms u_morph;
@@ -23,19 +23,6 @@ in vec2 v_uv;
 flat in vec4 v_instance_data;
 
 layout(location = 0) out vec4 frag_color;
-
-vec2 box_span(vec3 o, vec3 d) {
-  precise vec3 c = objectBoundCenter();
-  precise float t0 = -1e30, t1 = 1e30;
-  for (int k = 0; k < 3; ++k) {
-    precise float inv = 1.0 / d[k];
-    precise float a = (c[k] - OBJECT_BOUND_RADIUS - o[k]) * inv;
-    precise float b = (c[k] + OBJECT_BOUND_RADIUS - o[k]) * inv;
-    t0 = dm_max(t0, dm_min(a, b));
-    t1 = dm_min(t1, dm_max(a, b));
-  }
-  return vec2(t0, t1);
-}
 
 vec3 object_normal(vec3 p) {
   const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0),
@@ -74,7 +61,8 @@ void main() {
   precise vec3 world_hit = u_camera_origin + dir * (t * u_exhibit_scale);
   precise vec3 world_n = to_world(n);
   precise vec3 r = to_world(dl - 2.0 * dm_dot(n, dl) * n);
-  precise float shadow = sun_visibility(world_hit + world_n * 0.002);
+  precise float ndl = dm_dot(world_n, TO_SUN);
+  precise float shadow = ndl > 0.0 ? sun_visibility(world_hit, world_n, ndl) : 0.0;
   frag_color = vec4(shadeObjectLit(n, dl, sample_probe(r), shadow, 1.0, u_morph), 1.0);
   if (u_morph.hit_mask != 0) frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
   precise float view_depth = dm_dot(world_hit - u_camera_origin, u_camera_forward);

@@ -2,10 +2,14 @@
 // A frame as a small plan of passes over named targets, run by both backends (CPU:
 // backends/cpu/plan_runner, GL: backends/osmesa/gl_plan_runner).
 //
-// Targets are frame-sized images: colour targets (RGBA float) and depth targets (window depth in
-// channel 0, the convention of camera_model.h, cleared to 1). Every plan has three built-in
-// targets: "colour" (the frame's output), "depth", and "sdf_evals" (x = SDF evaluations of the
-// pixel's sample, for the bench; it used to ride in alpha).
+// Targets are images, frame-sized unless they give a size: colour targets (RGBA float) and depth
+// targets (window depth in channel 0, the convention of camera_model.h, cleared to 1). Every plan
+// has three built-in targets: "colour" (the frame's output), "depth", and "sdf_evals" (x = SDF
+// evaluations of the pixel's sample, for the bench; it used to ride in alpha).
+//
+// Setup passes run once per frame before the samples, into targets marked per_frame (cleared once,
+// before them): what is the same for every sample, such as a light's shadow map drawn by a mesh
+// pass with its own view. Later passes read such targets as inputs.
 //
 // Sub-pixel samples mean the same for every pass kind: the whole plan runs once per sample offset
 // of FrameContext::sample_offsets (ray passes trace through pixel + offset, mesh passes use the
@@ -16,6 +20,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -36,7 +41,9 @@ enum class TargetKind { Colour, Depth };
 struct TargetSpec {
   std::string name;
   TargetKind kind = TargetKind::Colour;
-  glm::vec4 clear{0.0f};  // colour targets; depth targets clear to 1
+  glm::vec4 clear{0.0f};   // colour targets; depth targets clear to 1
+  glm::ivec2 size{0};      // (0, 0): the frame's size
+  bool per_frame = false;  // written by setup passes: cleared once a frame, not before each sample
 };
 
 enum class DepthTest { Off, TestAndWrite, TestOnly };  // LESS when on
@@ -72,12 +79,19 @@ struct MeshInstance {
   glm::vec4 data{0.0f};
 };
 
+// The images a pass reads, in the order of its inputs (ImagePass::inputs, MeshPass::inputs).
+struct ImageInputs {
+  std::vector<const ImageRGBA*> images;
+  const ImageRGBA& operator[](size_t i) const { return *images[i]; }
+};
+
 // Varyings of a mesh pass's shading function, per covered sample.
 struct MeshFragment {
   glm::vec3 world_position, world_normal;  // normal interpolated, not normalised
   glm::vec2 uv;
   glm::vec4 instance_data;
   bool front_facing;
+  const ImageInputs* inputs = nullptr;  // the pass's inputs (MeshPass::inputs), in their order
 };
 
 // A vertex after a custom vertex stage: world position and (unnormalised) world normal.
@@ -85,10 +99,26 @@ struct PlacedVertex {
   glm::vec3 world, normal;
 };
 
+// A view of its own for a mesh pass that draws from elsewhere than the plan's camera (a light's
+// shadow map): clip = projection * view * world, never moved by the sample offset, into targets of
+// any size. GL: the pass's u_view and u_projection.
+struct PassView {
+  glm::mat4 view{1.0f}, projection{1.0f};
+};
+
+// An input of a pass: a target read through `sampler` with texelFetch on GL. Image passes read
+// image rows top-down on both backends (their shaders flip); a mesh pass reading texel (x, y) as
+// GL stores it (row 0 at the bottom) reads the CPU image's row height - 1 - y.
+struct ImageInput {
+  std::string target;
+  std::string sampler;
+};
+
 // Triangles with depth test and write, cull mode and alpha discard (alpha < alpha_cutoff is
 // discarded). CPU: `shade` per covered sample, and `place` per vertex when the pass has its own
 // `vertex` shader (empty: world = model * position, normal = mat3(model) * normal, as
-// common/mesh.vert). GL: `vertex` and `fragment` shader files.
+// common/mesh.vert). GL: `vertex` and `fragment` shader files. colour "" draws depth only (CPU:
+// `shade` may then be empty).
 struct MeshPass {
   std::string name;
   std::shared_ptr<const TriangleMesh> mesh;  // shared: backends cache their copy by this pointer
@@ -100,6 +130,8 @@ struct MeshPass {
   float alpha_cutoff = 0.0f;
   std::string vertex = "common/mesh.vert", fragment;
   std::vector<ShaderUniform> uniforms;
+  std::vector<ImageInput> inputs;  // targets the shading reads (MeshFragment::inputs)
+  std::optional<PassView> view;    // none: the plan's camera
   std::function<glm::vec4(const MeshFragment&)> shade;
   // Instead of `shade`, for surfaces found inside the mesh (ray marching in a bounding mesh): the
   // fragment's colour and its own window depth, or false to discard. The depth test and write use
@@ -110,20 +142,10 @@ struct MeshPass {
       place;
 };
 
-// The images an image pass reads, in the order of ImagePass::inputs.
-struct ImageInputs {
-  std::vector<const ImageRGBA*> images;
-  const ImageRGBA& operator[](size_t i) const { return *images[i]; }
-};
-
 // A pixel function of other targets (post-processing, compositing): output(x, y) from the inputs,
 // pixels independent of each other so threads never change bits. GL: a full-screen pass of
 // `shader`, each input bound to its sampler (read with texelFetch), image row 0 at the top as on
 // the CPU (the shader flips gl_FragCoord.y).
-struct ImageInput {
-  std::string target;
-  std::string sampler;
-};
 struct ImagePass {
   std::string name;
   std::vector<ImageInput> inputs;
@@ -142,6 +164,7 @@ using Pass = std::variant<RayPass, MeshPass, ImagePass>;
 
 struct FramePlan {
   std::vector<TargetSpec> targets;  // besides the built-in colour, depth and sdf_evals
+  std::vector<Pass> setup_passes;   // run in order, once per frame, before the samples
   std::vector<Pass> passes;         // run in order, once per sample
   float near_plane = 0.05f, far_plane = 500.0f;
 };

@@ -73,10 +73,12 @@ SampleHits RasterIds::run(int threads) const {
   const FrameContext& f = case_.ctx;
   SampleHits out(f.width, f.height, int(f.sample_offsets.size()));
   CpuTargets targets(plan_targets(FramePlan{}), f.width, f.height);
+  std::vector<MeshPassCache> caches(id_passes_.size());  // the frame's vertex stage, as the runner
   for (int s = 0; s < out.samples; ++s) {
     targets.clear();
     const CpuPassContext pc = pass_context(case_, s, threads);
-    for (const MeshPass& pass : id_passes_) run_mesh_pass(pass, pc, targets);
+    for (size_t p = 0; p < id_passes_.size(); ++p)
+      run_mesh_pass(id_passes_[p], pc, targets, caches[p]);
     const ImageRGBA& ids = targets.get(COLOUR_TARGET, "bench");
     const ImageRGBA& depth = targets.get(DEPTH_TARGET, "bench");
     for (int y = 0; y < f.height; ++y)
@@ -92,10 +94,11 @@ SampleHits run_scene_passes(const BenchCase& c, int threads) {
   const FrameContext& f = c.ctx;
   SampleHits out(f.width, f.height, int(f.sample_offsets.size()));
   CpuTargets targets(c.targets, f.width, f.height);
+  std::vector<MeshPassCache> caches(c.passes.size());  // the frame's vertex stage, as the runner
   for (int s = 0; s < out.samples; ++s) {
     targets.clear();
     const CpuPassContext pc = pass_context(c, s, threads);
-    for (const MeshPass& pass : c.passes) run_mesh_pass(pass, pc, targets);
+    for (size_t p = 0; p < c.passes.size(); ++p) run_mesh_pass(c.passes[p], pc, targets, caches[p]);
     const ImageRGBA& depth = targets.get(c.passes.front().depth, "bench");
     for (int y = 0; y < f.height; ++y)
       for (int x = 0; x < f.width; ++x) out.depth[out.index(s, x, y)] = depth.at(x, y)[0];

@@ -134,18 +134,24 @@ void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   d.placed_for = &pass;
 }
 
+// Clip space of the pass: its own view, or the plan's camera moved by the sample offset.
+glm::mat4 view_projection(const MeshPass& pass, const CpuPassContext& pc) {
+  if (pass.view) return pass.view->projection * pass.view->view;
+  return sample_projection(pc.camera, pc.offset, pc.frame.width, pc.frame.height) * pc.camera.view;
+}
+
 // Appends the triangle of window vertices wv and varyings cv() unless it has no area, is culled
 // or lies wholly off the frame (the bins would never hold it); cv is called only for triangles
 // kept, so culled ones cost no copies.
 template <class Varyings>
 void emit(const WindowVertex wv[3], Varyings cv, const glm::vec4& data, CullMode cull,
-          const FrameContext& f, std::vector<ScreenTriangle>& out) {
+          const glm::ivec2& size, std::vector<ScreenTriangle>& out) {
   const glm::dvec2 p[3] = {wv[0].p, wv[1].p, wv[2].p};
   const double area = edge(p[0], p[1], p[2]);
   if (area == 0.0) return;
   const bool front = area > 0.0;
   if ((cull == CullMode::Back && !front) || (cull == CullMode::Front && front)) return;
-  if (pixel_bounds(p, f.height).off_frame(f.width, f.height)) return;
+  if (pixel_bounds(p, size.y).off_frame(size.x, size.y)) return;
   ScreenTriangle& s = out.emplace_back();
   s.data = data;
   s.front = front;
@@ -160,20 +166,19 @@ void emit(const WindowVertex wv[3], Varyings cv, const glm::vec4& data, CullMode
   }
 }
 
-// This sample's screen triangles into d.triangles: clip positions and window transforms once per
-// vertex, then per triangle near clipping (only for triangles that cross the near plane: one wholly
-// in front is its own clipped self), culling and the off-frame test.
-void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& d) {
+// This sample's screen triangles on a target of `size` into d.triangles: clip positions and window
+// transforms once per vertex, then per triangle near clipping (only for triangles that cross the
+// near plane: one wholly in front is its own clipped self), culling and the off-frame test.
+void setup(const MeshPass& pass, const CpuPassContext& pc, const glm::ivec2& size,
+           MeshPassCache::Data& d) {
   const TriangleMesh& m = *pass.mesh;
-  const FrameContext& f = pc.frame;
   if (d.placed_for != &pass) place_vertices(pass, d);
-  const glm::mat4 view_proj =
-      sample_projection(pc.camera, pc.offset, f.width, f.height) * pc.camera.view;
+  const glm::mat4 view_proj = view_projection(pass, pc);
   d.clip.resize(d.world.size());
   d.window.resize(d.world.size());
   for (size_t i = 0; i < d.world.size(); ++i) {
     d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
-    d.window[i] = to_window(d.clip[i], f.width, f.height);
+    d.window[i] = to_window(d.clip[i], size.x, size.y);
   }
   d.triangles.clear();
   const size_t nv = m.vertex_count();
@@ -198,7 +203,7 @@ void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& 
       if (in_front) {
         const WindowVertex wv[3] = {d.window[base + idx[0]], d.window[base + idx[1]],
                                     d.window[base + idx[2]]};
-        emit(wv, vertex, data, pass.cull, f, d.triangles);
+        emit(wv, vertex, data, pass.cull, size, d.triangles);
         continue;
       }
       const ClipVertex v[3] = {vertex(0), vertex(1), vertex(2)};
@@ -206,20 +211,21 @@ void setup(const MeshPass& pass, const CpuPassContext& pc, MeshPassCache::Data& 
       const int n = clip_near(v, clipped);
       for (int c = 0; c < n; ++c) {
         const ClipVertex* cv = clipped + c * 3;
-        const WindowVertex wv[3] = {to_window(cv[0].clip, f.width, f.height),
-                                    to_window(cv[1].clip, f.width, f.height),
-                                    to_window(cv[2].clip, f.width, f.height)};
+        const WindowVertex wv[3] = {to_window(cv[0].clip, size.x, size.y),
+                                    to_window(cv[1].clip, size.x, size.y),
+                                    to_window(cv[2].clip, size.x, size.y)};
         emit(
-            wv, [cv](int k) { return cv[k]; }, data, pass.cull, f, d.triangles);
+            wv, [cv](int k) { return cv[k]; }, data, pass.cull, size, d.triangles);
       }
     }
   }
 }
 
 struct MeshTargets {
-  ImageRGBA* colour;
-  ImageRGBA* depth;  // null: none
+  ImageRGBA* colour;  // null: depth only
+  ImageRGBA* depth;   // null: none
   bool test, write_depth;
+  const ImageInputs* inputs;
 };
 
 void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int height,
@@ -260,6 +266,10 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       const int x = wx, y = height - 1 - wy;
       const bool late = bool(pass.shade_depth);
       if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) continue;
+      if (!late && !pass.shade) {  // depth only, nothing to discard
+        if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+        continue;
+      }
       // Perspective-correct varyings.
       const double q0 = l0 * s.inv_w[0], q1 = l1 * s.inv_w[1], q2 = l2 * s.inv_w[2];
       const double qs = q0 + q1 + q2;
@@ -270,6 +280,7 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       frag.uv = s.v[0].uv * w0 + s.v[1].uv * w1 + s.v[2].uv * w2;
       frag.instance_data = s.data;
       frag.front_facing = s.front;
+      frag.inputs = out.inputs;
       glm::vec4 c;
       if (late) {
         if (!pass.shade_depth(frag, c, z)) continue;
@@ -279,6 +290,7 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
       }
       if (c.a < pass.alpha_cutoff) continue;
       if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+      if (!out.colour) continue;
       float* px = out.colour->at(x, y);
       px[0] = c.r;
       px[1] = c.g;
@@ -291,19 +303,20 @@ void rasterise(const ScreenTriangle& s, const MeshPass& pass, const Tile& t, int
 // The triangles whose pixel bounds may touch each tile, in mesh order (so each pixel still sees
 // its fragments in the same order): a pass of many triangles (fur shells) then costs each tile only
 // its own triangles. The bounds are conservative; rasterise() clips exactly.
-void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const FrameContext& f, int tile_size,
-                 std::vector<std::vector<unsigned>>& bins) {
-  const int cols = (f.width + tile_size - 1) / tile_size;
-  const int rows = (f.height + tile_size - 1) / tile_size;
+void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const glm::ivec2& size,
+                 int tile_size, std::vector<std::vector<unsigned>>& bins) {
+  const int width = size.x, height = size.y;
+  const int cols = (width + tile_size - 1) / tile_size;
+  const int rows = (height + tile_size - 1) / tile_size;
   bins.resize(size_t(cols * rows));
   for (std::vector<unsigned>& b : bins) b.clear();
   for (size_t i = 0; i < triangles.size(); ++i) {
-    const PixelBounds b = pixel_bounds(triangles[i].p, f.height);
-    if (b.off_frame(f.width, f.height)) continue;
+    const PixelBounds b = pixel_bounds(triangles[i].p, height);
+    if (b.off_frame(width, height)) continue;
     const int c0 = int(std::max(b.lo_x, 0.0)) / tile_size;
-    const int c1 = std::min(cols - 1, int(std::min(b.hi_x, double(f.width - 1))) / tile_size);
+    const int c1 = std::min(cols - 1, int(std::min(b.hi_x, double(width - 1))) / tile_size);
     const int r0 = int(std::max(b.lo_y, 0.0)) / tile_size;
-    const int r1 = std::min(rows - 1, int(std::min(b.hi_y, double(f.height - 1))) / tile_size);
+    const int r1 = std::min(rows - 1, int(std::min(b.hi_y, double(height - 1))) / tile_size);
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
   }
@@ -314,20 +327,35 @@ void bin_by_tile(const std::vector<ScreenTriangle>& triangles, const FrameContex
 void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& targets,
                    MeshPassCache& cache) {
   if (!pass.mesh) throw std::runtime_error("mesh pass '" + pass.name + "' has no mesh");
-  if (!pass.shade && !pass.shade_depth)
+  if (!pass.shade && !pass.shade_depth && !pass.colour.empty())
     throw std::runtime_error("mesh pass '" + pass.name + "' has no CPU code");
-  MeshTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
+  MeshTargets out{pass.colour.empty() ? nullptr : &targets.get(pass.colour, pass.name), nullptr,
+                  false, false, nullptr};
   if (!pass.depth.empty()) {
     out.depth = &targets.get(pass.depth, pass.name);
     out.test = pass.depth_test != DepthTest::Off;
     out.write_depth = pass.depth_test != DepthTest::TestOnly;
   }
+  if (!out.colour && !out.depth)
+    throw std::runtime_error("mesh pass '" + pass.name + "' writes no target");
+  ImageInputs inputs;
+  for (const ImageInput& in : pass.inputs) {
+    if (in.target == pass.colour || in.target == pass.depth)
+      throw std::runtime_error("mesh pass '" + pass.name + "' reads its own target '" + in.target +
+                               "'");
+    inputs.images.push_back(&targets.get(in.target, pass.name));
+  }
+  out.inputs = &inputs;
+  const ImageRGBA& drawn = out.colour ? *out.colour : *out.depth;
+  if (out.colour && out.depth &&
+      (out.depth->width != drawn.width || out.depth->height != drawn.height))
+    throw std::runtime_error("mesh pass '" + pass.name + "': colour and depth sizes differ");
+  const glm::ivec2 size(drawn.width, drawn.height);
   MeshPassCache::Data& d = cache.data();
-  setup(pass, pc, d);
-  const FrameContext& f = pc.frame;
-  bin_by_tile(d.triangles, f, pc.tile_size, d.bins);
-  for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (unsigned i : d.bins[size_t(t.index)]) rasterise(d.triangles[i], pass, t, f.height, out);
+  setup(pass, pc, size, d);
+  bin_by_tile(d.triangles, size, pc.tile_size, d.bins);
+  for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {
+    for (unsigned i : d.bins[size_t(t.index)]) rasterise(d.triangles[i], pass, t, size.y, out);
   });
 }
 

@@ -8,7 +8,7 @@
 namespace sdfreel {
 
 const RayPass* resolvable_ray_pass(const FramePlan& plan) {
-  if (plan.passes.size() != 1) return nullptr;
+  if (plan.passes.size() != 1 || !plan.setup_passes.empty()) return nullptr;
   const auto* ray = std::get_if<RayPass>(&plan.passes.front());
   if (!ray || !ray->packet || ray->colour != COLOUR_TARGET || !ray->depth.empty()) return nullptr;
   return ray;

@@ -8,12 +8,23 @@ namespace sdfreel {
 CpuTargets::CpuTargets(const std::vector<TargetSpec>& specs, int width, int height)
     : specs_(specs) {
   for (const TargetSpec& s : specs_)
-    if (!images_.emplace(s.name, ImageRGBA(width, height)).second)
+    if (!images_
+             .emplace(s.name,
+                      s.size.x > 0 ? ImageRGBA(s.size.x, s.size.y) : ImageRGBA(width, height))
+             .second)
       throw std::runtime_error("frame plan: target '" + s.name + "' declared twice");
 }
 
 void CpuTargets::clear() {
+  clear_where(false);
+}
+void CpuTargets::clear_per_sample() {
+  clear_where(true);
+}
+
+void CpuTargets::clear_where(bool per_sample_only) {
   for (const TargetSpec& s : specs_) {
+    if (per_sample_only && s.per_frame) continue;
     const glm::vec4 c = s.kind == TargetKind::Depth ? glm::vec4(1.0f) : s.clear;
     std::vector<float>& px = images_.at(s.name).pixels;
     for (size_t i = 0; i < px.size(); i += 4) {

@@ -1,6 +1,7 @@
 #pragma once
-// The named targets of a frame plan on the CPU: one frame-sized RGBA float image each (depth in
-// channel 0), reused from sample to sample and cleared before each.
+// The named targets of a frame plan on the CPU: one RGBA float image each (depth in channel 0),
+// frame-sized unless the spec gives a size, reused from sample to sample and cleared before each
+// (per-frame targets once a frame).
 #include <map>
 #include <string>
 #include <vector>
@@ -13,11 +14,13 @@ namespace sdfreel {
 class CpuTargets {
  public:
   CpuTargets(const std::vector<TargetSpec>& specs, int width, int height);
-  void clear();
+  void clear();             // every target
+  void clear_per_sample();  // all but the per-frame targets
   // Throws std::runtime_error naming the pass when the plan names a target it does not declare.
   ImageRGBA& get(const std::string& name, const std::string& pass);
 
  private:
+  void clear_where(bool per_sample_only);
   std::vector<TargetSpec> specs_;
   std::map<std::string, ImageRGBA> images_;
 };

@@ -50,13 +50,15 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     return run_ray_pass_resolved(*ray, pc, clear, stats, counts);
   }
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
+  targets.clear();
+  for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
   LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
   std::vector<MeshPassCache> caches(plan.passes.size());  // one per pass, for the frame
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
     if (live.round_ends_at(i) && live.decide(i, sum, sum_odd) == 0) break;
     pc.offset = ctx.sample_offsets[size_t(i)];
-    targets.clear();
+    targets.clear_per_sample();
     for (size_t p = 0; p < plan.passes.size(); ++p)
       run_pass(plan.passes[p], pc, targets, stats, &caches[p]);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");

@@ -1,10 +1,11 @@
 #pragma once
-// Runs a frame plan on the CPU: per sample offset, in list order, clear the targets and run every
-// pass in plan order; add the sample's "colour" to the frame's sum; the frame is sum / count.
-// Adaptive sampling (render/adaptive_sampling.h): a plan of one ray pass runs per pixel
-// (cpu_ray_pass_resolved.h); any other plan runs every pass over the whole frame for each sample
-// while any pixel is live and adds the sample only to live pixels, so image passes still read
-// every neighbour. Such plans get the same pictures, but save time only when every pixel stops.
+// Runs a frame plan on the CPU: clear every target and run the setup passes once; then per sample
+// offset, in list order, clear the targets that are not per-frame and run every pass in plan order;
+// add the sample's "colour" to the frame's sum; the frame is sum / count. Adaptive sampling
+// (render/adaptive_sampling.h): a plan of one ray pass runs per pixel (cpu_ray_pass_resolved.h);
+// any other plan runs every pass over the whole frame for each sample while any pixel is live and
+// adds the sample only to live pixels, so image passes still read every neighbour. Such plans get
+// the same pictures, but save time only when every pixel stops.
 #include "backends/cpu/cpu_mesh_pass.h"
 #include "backends/cpu/cpu_pass_context.h"
 #include "backends/cpu/cpu_targets.h"

@@ -53,6 +53,14 @@ void append(std::vector<ShaderUniform>& to, const std::vector<ShaderUniform>& fr
   to.insert(to.end(), from.begin(), from.end());
 }
 
+// A pass with a view of its own draws with it instead of the camera's.
+void use_view(std::vector<ShaderUniform>& uniforms, const PassView& view) {
+  for (ShaderUniform& u : uniforms) {
+    if (u.name == "u_view") u = matrix("u_view", view.view);
+    if (u.name == "u_projection") u = matrix("u_projection", view.projection);
+  }
+}
+
 }  // namespace
 
 GlProgramId GlPlanRunner::program(const std::string& vertex, const std::string& fragment) {
@@ -91,6 +99,7 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
   } else if (const auto* m = std::get_if<MeshPass>(&pass)) {
     p.program = program(m->vertex, m->fragment);
     p.mesh = mesh(m->mesh);
+    if (m->view) use_view(p.uniforms, *m->view);
     std::vector<float> instances;
     for (const MeshInstance& i : m->instances) {
       for (int c = 0; c < 4; ++c)
@@ -99,13 +108,21 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
     }
     driver_.set_instances(p.mesh, instances);
     p.instances = int(m->instances.size());
-    p.target = targets_.framebuffer({m->colour}, m->depth, p.name);
+    std::vector<std::string> colours;
+    if (!m->colour.empty()) colours.push_back(m->colour);
+    p.target = targets_.framebuffer(colours, m->depth, p.name);
     p.depth = depth_mode(m->depth, m->depth_test);
     p.cull = gl_cull(m->cull);
     p.uniforms.push_back({"u_alpha_cutoff", 1, {m->alpha_cutoff}});
     append(p.uniforms, scene.uniforms);
     append(p.uniforms, m->uniforms);
     p.textures = scene.textures;
+    for (const ImageInput& in : m->inputs) {
+      if (in.target == m->colour || in.target == m->depth)
+        throw std::runtime_error("mesh pass '" + m->name + "' reads its own target '" + in.target +
+                                 "'");
+      p.textures.push_back({in.sampler, targets_.texture(in.target, m->name)});
+    }
   } else {
     const ImagePass& img = std::get<ImagePass>(pass);
     p.program = program(FULL_SCREEN_VERTEX, img.shader);
@@ -162,8 +179,16 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
     live_mask_size_ = glm::ivec2(ctx.width, ctx.height);
   }
   // Only a plan of one ray pass may skip stopped pixels: other passes may read any pixel.
-  const bool one_ray_pass =
-      plan.passes.size() == 1 && std::holds_alternative<RayPass>(plan.passes[0]);
+  const bool one_ray_pass = plan.passes.size() == 1 && plan.setup_passes.empty() &&
+                            std::holds_alternative<RayPass>(plan.passes[0]);
+  // Setup passes once, at pixel centres, into the per-frame targets (cleared once here).
+  for (size_t k = 0; k < plan_target_count; ++k)
+    if (specs[k].per_frame) targets_.clear(specs[k].name);
+  if (!plan.setup_passes.empty()) {
+    std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, glm::vec2(0.5f));
+    base.push_back({"u_discard_stopped", 1, {0.0f}});
+    for (const Pass& pass : plan.setup_passes) run_pass(pass, scene, base);
+  }
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
     if (live.round_ends_at(i)) {
       const ImageRGBA sum = driver_.read_rgba(targets_.framebuffer({SUM_COLOUR}, "", "round"));
@@ -172,7 +197,8 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
       upload_live_mask(live.mask(), ctx.width, ctx.height);
       live_mask_full_ = false;
     }
-    for (size_t k = 0; k < plan_target_count; ++k) targets_.clear(specs[k].name);
+    for (size_t k = 0; k < plan_target_count; ++k)
+      if (!specs[k].per_frame) targets_.clear(specs[k].name);
     std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, ctx.sample_offsets[size_t(i)]);
     base.push_back({"u_discard_stopped", 1, {one_ray_pass ? 1.0f : 0.0f}});
     for (const Pass& pass : plan.passes) run_pass(pass, scene, base);

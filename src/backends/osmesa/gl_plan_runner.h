@@ -1,6 +1,7 @@
 #pragma once
-// Runs a frame plan (render/frame_plan.h) on the GL driver: per sample offset, in list order, the
-// targets are cleared and every pass drawn in plan order (ray and image passes as full-screen
+// Runs a frame plan (render/frame_plan.h) on the GL driver: the per-frame targets are cleared and
+// the setup passes drawn once; then per sample offset, in list order, the other targets are
+// cleared and every pass drawn in plan order (ray and image passes as full-screen
 // passes, mesh passes as instanced meshes); then one full-screen draw adds the sample's "colour"
 // and "sdf_evals" into float sum targets (blend ONE + ONE: one IEEE add a channel, samples in list
 // order, the CPU's order). The frame is the sum read back times 1 / count, on the host as on the

@@ -9,11 +9,15 @@ namespace {
 bool same_specs(const std::vector<TargetSpec>& a, const std::vector<TargetSpec>& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].name != b[i].name || a[i].kind != b[i].kind) return false;
+    if (a[i].name != b[i].name || a[i].kind != b[i].kind || a[i].size != b[i].size) return false;
   return true;
 }
 
 }  // namespace
+
+glm::ivec2 GlTargets::size_of(const TargetSpec& s) const {
+  return s.size.x > 0 ? s.size : glm::ivec2(width_, height_);
+}
 
 void GlTargets::release() {
   for (auto& [key, fb] : framebuffers_) gl_.DeleteFramebuffers(1, &fb.framebuffer);
@@ -36,7 +40,8 @@ void GlTargets::prepare(const std::vector<TargetSpec>& specs, int width, int hei
     gl_.GenTextures(1, &tex);
     gl_.BindTexture(GL_TEXTURE_2D, tex);
     const bool depth = s.kind == TargetKind::Depth;
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, depth ? GL_DEPTH_COMPONENT32F : GL_RGBA32F, width, height, 0,
+    const glm::ivec2 size = size_of(s);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, depth ? GL_DEPTH_COMPONENT32F : GL_RGBA32F, size.x, size.y, 0,
                    depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, nullptr);
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -82,8 +87,15 @@ GlTargetRef GlTargets::framebuffer(const std::vector<std::string>& colours,
   const auto found = framebuffers_.find(key);
   if (found != framebuffers_.end()) return found->second;
   GlTargetRef ref;
-  ref.width = width_;
-  ref.height = height_;
+  const std::string& first = colours.empty() ? depth : colours.front();
+  const glm::ivec2 size = first.empty() ? glm::ivec2(width_, height_) : size_of(spec(first, pass));
+  for (const std::string& c : colours)
+    if (size_of(spec(c, pass)) != size)
+      throw std::runtime_error("frame plan: pass '" + pass + "' draws into targets of two sizes");
+  if (!depth.empty() && size_of(spec(depth, pass)) != size)
+    throw std::runtime_error("frame plan: pass '" + pass + "' draws into targets of two sizes");
+  ref.width = size.x;
+  ref.height = size.y;
   ref.color_attachments = int(colours.size());
   ref.depth = !depth.empty();
   gl_.GenFramebuffers(1, &ref.framebuffer);

@@ -1,7 +1,8 @@
 #pragma once
 // The named targets of a frame plan on GL: one texture each (RGBA32F, or DEPTH_COMPONENT32F for
-// depth targets, so later passes can sample depth), and framebuffers combining them as passes
-// write them. Kept from frame to frame while the size and the list of targets stay the same.
+// depth targets, so later passes can sample depth), frame-sized unless the spec gives a size, and
+// framebuffers combining them as passes write them (all of a framebuffer's targets one size). Kept
+// from frame to frame while the size and the list of targets stay the same.
 #include <map>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ class GlTargets {
   const GlApi& gl_;
   int width_ = 0, height_ = 0;
   std::vector<TargetSpec> specs_;
+  glm::ivec2 size_of(const TargetSpec& s) const;
   std::map<std::string, GLuint> textures_;
   std::map<std::string, GlTargetRef> framebuffers_;  // by "colour,colour|depth"
 };

@@ -29,6 +29,7 @@ glm::vec3 exhibit_one_centre(const FrameContext& ctx) {
 void add_exhibit_passes(FramePlan& plan, const ExhibitStage& stage,
                         const ExhibitPasses extra[PLINTH_COUNT]) {
   const sdf_morph::MorphUniforms morph = sdf_morph::make_morph_uniforms(stage.frame);
+  plan.setup_passes.push_back(sdf_exhibit_shadow_pass(exhibit_one_model(stage.frame), morph));
   plan.passes.push_back(sdf_exhibit_pass(exhibit_one_model(stage.frame), morph, stage.light,
                                          *stage.probe, stage.frame, stage.camera, stage.colour,
                                          stage.depth));

@@ -109,6 +109,14 @@ std::vector<HallBox> hall_boxes() {
   return b;
 }
 
+std::vector<HallBox> sun_casters() {
+  std::vector<HallBox> b;
+  west_wall_with_window(b);
+  bench(b);
+  plinths(b);
+  return b;
+}
+
 std::vector<HallBox> sun_occluders() {
   std::vector<HallBox> b;
   bench(b);

@@ -38,8 +38,13 @@ struct HallBox {
 // Every box of the hall, in a fixed order.
 std::vector<HallBox> hall_boxes();
 
-// The boxes that cast sun shadows inside the room (plinths, bench): the CPU and GL shading test
-// the sun's ray against them analytically (besides the window's opening).
+// The boxes that may stand between the sun and a sunlit point of the room: the west wall with its
+// window and mullions, the bench, the plinths (and their labels). The sun's shadow map draws them
+// (museum/sun_shadow.h).
+std::vector<HallBox> sun_casters();
+
+// The boxes inside the room that cast sun shadows (plinths, bench), for the analytic test of the
+// reflection probe's shading (museum/lighting.h), which runs before the frame's shadow map exists.
 std::vector<HallBox> sun_occluders();
 
 }  // namespace sdfreel::museum

@@ -24,10 +24,10 @@ constexpr float SPECULAR_F0 = 0.04f;
 constexpr float FLOOR_ROUGHNESS = 0.45f;
 constexpr float PLANK_W = 0.2f, PLANK_L = 1.2f, SEAM = 0.03f;
 constexpr uint32_t PLANK_SEED = 7u;
-constexpr float NORMAL_OFFSET = 0.002f;  // shadow rays start this far off the surface
+constexpr float NORMAL_OFFSET = 0.002f;  // shadow lookups start this far off the surface
 
-// Signed distance into the window's opening at q (positive inside glass, negative on the wall or
-// a mullion), in the plane of the wall.
+// The analytic sun test (the reflection probe's shading). Signed distance into the window's opening
+// at q (positive inside glass, negative on the wall or a mullion), in the plane of the wall.
 float window_opening(const vec3& q) {
   const float rect =
       dm::min(dm::min(q.y - WINDOW_Y0, WINDOW_Y1 - q.y), dm::min(q.z - WINDOW_Z0, WINDOW_Z1 - q.z));
@@ -78,15 +78,22 @@ vec3 floor_albedo(const vec3& p, const vec3& albedo) {
   return albedo * (tint * seam);
 }
 
-}  // namespace
-
-float sun_visibility(const vec3& p, const HallLight& light) {
+float analytic_visibility(const vec3& p, const HallLight& light) {
   const float inner = through_plane(p, -ROOM_X);
   if (!(inner > 0.0f)) return 0.0f;
   const float vis = dm::min(inner, through_plane(p, -ROOM_X - WALL));
   for (const HallBox& b : light.occluders)
     if (blocks(p, b)) return 0.0f;
   return vis;
+}
+
+}  // namespace
+
+float sun_visibility(const vec3& p, const vec3& n, float ndl, const HallLight& light,
+                     const SunMap& map) {
+  const vec3 q = p + n * NORMAL_OFFSET;
+  return map.image ? sun_map_visibility(*map.image, *map.view, q, ndl)
+                   : analytic_visibility(q, light);
 }
 
 vec3 sky(const vec3& d) {
@@ -99,7 +106,7 @@ vec3 sky(const vec3& d) {
 }
 
 vec3 hall_radiance(const vec3& p, const vec3& normal, const vec3& albedo_in, float material,
-                   const HallLight& light) {
+                   const HallLight& light, const SunMap& map) {
   const vec3 n = normal / dm::sqrt(glm::dot(normal, normal));
   const bool is_floor = material >= MATERIAL_FLOOR;
   const vec3 albedo = is_floor ? floor_albedo(p, albedo_in) : albedo_in;
@@ -109,7 +116,7 @@ vec3 hall_radiance(const vec3& p, const vec3& normal, const vec3& albedo_in, flo
   const float ndl = glm::dot(n, TO_SUN);
   vec3 direct(0.0f);
   if (ndl > 0.0f) {
-    const float vis = sun_visibility(p + n * NORMAL_OFFSET, light);
+    const float vis = sun_visibility(p, n, ndl, light, map);
     if (vis > 0.0f) {
       const vec3 hv = TO_SUN + v;
       const vec3 h = hv / dm::sqrt(glm::dot(hv, hv));
@@ -128,18 +135,9 @@ vec3 hall_radiance(const vec3& p, const vec3& normal, const vec3& albedo_in, flo
 }
 
 std::vector<ShaderUniform> light_uniforms(const HallLight& light) {
-  ShaderUniform lo{"u_occluder_lo", 3, {}}, hi{"u_occluder_hi", 3, {}};
-  for (int i = 0; i < MAX_OCCLUDERS; ++i) {
-    const bool used = i < int(light.occluders.size());
-    const vec3 a = used ? light.occluders[size_t(i)].lo : vec3(0.0f);
-    const vec3 b = used ? light.occluders[size_t(i)].hi : vec3(0.0f);
-    lo.values.insert(lo.values.end(), {a.x, a.y, a.z});
-    hi.values.insert(hi.values.end(), {b.x, b.y, b.z});
-  }
-  return {lo,
-          hi,
-          {"u_occluder_count", 1, {float(light.occluders.size())}},
-          {"u_eye", 3, {light.eye.x, light.eye.y, light.eye.z}}};
+  std::vector<ShaderUniform> u = sun_view_uniforms(sun_view());
+  u.push_back({"u_eye", 3, {light.eye.x, light.eye.y, light.eye.z}});
+  return u;
 }
 
 }  // namespace sdfreel::museum

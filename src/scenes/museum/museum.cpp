@@ -1,9 +1,12 @@
 // Scene "museum" (seed 004): a gallery hall drawn the conventional way (meshes, a depth buffer,
 // a sun through the window) with the seed's exhibits in it. The frame is a plan of passes
 // (render/frame_plan.h):
+//   0. once a frame, before the samples: the sun's shadow map (museum/sun_shadow.h), the depth of
+//      the window wall, plinths and bench (a mesh pass with the sun's view) and of exhibit 1
+//      (ray-marched from the sun inside its bound);
 //   1. sky: a ray pass into the "hall" target (what the window shows);
 //   2. hall: one instanced cube mesh for every box of the hall (museum/hall_layout.h), lit by the
-//      sun with analytic window and occluder shadows, ambient and Blinn-Phong specular;
+//      sun shadowed through the map, ambient and Blinn-Phong specular;
 //   3. exhibits on their plinths (museum/exhibits.h): exhibit 1, the sdf_morph object ray-marched
 //      inside its bounding mesh, composited by depth, reflecting a probe of the hall taken from its
 //      centre in prepare() (museum/probe.h); exhibit 2, the lenticular card, on the second plinth
@@ -34,6 +37,7 @@
 #include "scenes/museum/exhibits.h"
 #include "scenes/museum/fur_exhibit.h"
 #include "scenes/museum/meshes.h"
+#include "scenes/museum/sun_shadow.h"
 #include "scenes/scene.h"
 
 namespace sdfreel {
@@ -95,10 +99,12 @@ MeshPass hall_pass(const HallLight& light, bool ids) {
   p.fragment = "museum/hall.frag";
   p.uniforms = light_uniforms(light);
   p.uniforms.push_back({"u_hit_mask", 1, {ids ? 1.0f : 0.0f}});
+  p.inputs = {{SUN_MAP_TARGET, SUN_MAP_SAMPLER}};
   p.shade = [light, ids](const MeshFragment& f) {
     if (ids) return glm::vec4(glm::vec3(HIT_ID_HALL), 1.0f);
+    const SunMap map{&(*f.inputs)[0], &sun_view()};
     return glm::vec4(hall_radiance(f.world_position, f.world_normal, glm::vec3(f.instance_data),
-                                   f.instance_data.w, light),
+                                   f.instance_data.w, light, map),
                      1.0f);
   };
   return p;
@@ -130,6 +136,8 @@ class MuseumScene : public Scene {
     plan.near_plane = 0.05f;
     plan.far_plane = 60.0f;
     plan.targets.push_back({HALL_TARGET, TargetKind::Colour, glm::vec4(0.0f)});
+    plan.targets.push_back(sun_map_target());
+    plan.setup_passes.push_back(sun_casters_pass());
     const CameraModel cam =
         make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
     HallLight light{ctx.camera.origin, sun_occluders()};

@@ -85,10 +85,10 @@ ReflectionProbe render_probe(const vec3& centre, const std::vector<HallBox>& box
         size_t i = 0;
         float th;
         vec3 n;
-        const vec3 c =
-            hit_boxes(centre, d, boxes, i, th, n)
-                ? hall_radiance(centre + d * th, n, boxes[i].albedo, boxes[i].material, seen_from)
-                : sky(d);
+        const vec3 c = hit_boxes(centre, d, boxes, i, th, n)
+                           ? hall_radiance(centre + d * th, n, boxes[i].albedo, boxes[i].material,
+                                           seen_from, SunMap{})
+                           : sky(d);
         float* px =
             &p.texels[((size_t(face) * PROBE_SIZE + size_t(y)) * PROBE_SIZE + size_t(x)) * 4];
         px[0] = c.r, px[1] = c.g, px[2] = c.b, px[3] = 1.0f;

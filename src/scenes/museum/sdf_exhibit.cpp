@@ -5,6 +5,7 @@
 
 #include "render/quality.h"
 #include "scenes/museum/meshes.h"
+#include "scenes/museum/sun_shadow.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
 #include "scenes/sdf_morph/render.h"
@@ -55,8 +56,8 @@ vec3 object_normal(const vec3& p, const sdf_morph::MorphUniforms& u) {
 // The camera's ray through a point of the bound's back face, marched in object space with plain
 // sphere tracing (the morph is 1-Lipschitz) and the quality preset's steps and threshold (in pixel
 // footprints).
-bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, glm::vec4& colour,
-                   float& depth) {
+bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, const ImageRGBA& sun_map,
+                   glm::vec4& colour, float& depth) {
   const vec3 to_point = world_point - f.eye;
   const vec3 dir = to_point / dm::sqrt(glm::dot(to_point, to_point));
   const vec3 o = vec3(f.inv_model * glm::vec4(f.eye, 1.0f));
@@ -80,12 +81,43 @@ bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, glm::vec4& co
   const vec3 world_hit = f.eye + dir * (t * f.scale);
   const vec3 world_n = f.to_world * n;
   const vec3 r = f.to_world * sdf_morph::reflectDir(dl, n);
-  const float shadow = sun_visibility(world_hit + world_n * 0.002f, f.light);
+  const float ndl = glm::dot(world_n, TO_SUN);
+  const float shadow =
+      ndl > 0.0f ? sun_visibility(world_hit, world_n, ndl, f.light, {&sun_map, &sun_view()}) : 0.0f;
   const vec3 c = sdf_morph::shadeObjectLit(n, dl, sample_probe(*f.probe, r), shadow, 1.0f, f.morph);
   colour = glm::vec4(f.morph.hit_mask ? vec3(sdf_morph::HIT_ID_OBJECT) : c, 1.0f);
   const float view_depth = glm::dot(world_hit - f.eye, f.forward);
   depth = f.depth_scale * (1.0f - f.near_plane / view_depth);
   return true;
+}
+
+// Exhibit 1 as the sun sees it: what the shadow map's pass needs, fixed for the frame.
+struct ShadowFrame {
+  glm::mat4 inv_model;
+  float scale;
+  sdf_morph::MorphUniforms morph;
+  SunView sun;
+  float texel;  // the map's texel in object units: the march's footprint (orthographic, constant)
+};
+
+// The sun's ray through a point of the bound's back face (as the sun sees it), marched from where
+// it enters the bound; the hit's window depth in the map, or false when it misses.
+bool exhibit_sun_depth(const ShadowFrame& f, const vec3& world_point, float& depth) {
+  const vec3 o = vec3(f.inv_model * glm::vec4(world_point, 1.0f));
+  const vec3 dl = vec3(f.inv_model * glm::vec4(f.sun.forward, 0.0f)) * f.scale;
+  const glm::vec2 span = box_span(o, dl);
+  const float eps = f.morph.naive ? f.morph.hit_eps : dm::max(MIN_EPS, f.morph.hit_eps * f.texel);
+  float t = span.x;
+  for (int i = 0; i < f.morph.max_steps && t < span.y; ++i) {
+    const float d = sdf_morph::mapObject(o + dl * t, f.morph);
+    if (d < eps) {
+      const vec3 world_hit = world_point + f.sun.forward * (t * f.scale);
+      depth = sun_map_depth(f.sun, glm::dot(world_hit - f.sun.origin, f.sun.forward));
+      return true;
+    }
+    t = t + d;
+  }
+  return false;
 }
 
 std::vector<ShaderUniform> exhibit_uniforms(const ExhibitFrame& f) {
@@ -139,8 +171,45 @@ MeshPass sdf_exhibit_pass(const glm::mat4& model, const sdf_morph::MorphUniforms
   p.cull = CullMode::Front;  // back faces only: drawn with the camera inside the bound too
   p.fragment = "museum/sdf_exhibit.frag";
   p.uniforms = exhibit_uniforms(f);
+  p.inputs = {{SUN_MAP_TARGET, SUN_MAP_SAMPLER}};
   p.shade_depth = [f](const MeshFragment& frag, glm::vec4& c, float& z) {
-    return shade_exhibit(f, frag.world_position, c, z);
+    return shade_exhibit(f, frag.world_position, (*frag.inputs)[0], c, z);
+  };
+  return p;
+}
+
+MeshPass sdf_exhibit_shadow_pass(const glm::mat4& model, const sdf_morph::MorphUniforms& morph) {
+  const glm::mat4 object_to_world =
+      glm::translate(model, vec3(0.0f, -sdf_morph::PEDESTAL_HEIGHT, 0.0f));
+  ShadowFrame f;
+  f.inv_model = glm::inverse(object_to_world);
+  f.scale = glm::length(vec3(model[0]));
+  f.morph = morph;
+  f.sun = sun_view();
+  f.texel = f.sun.texel / f.scale;
+  MeshPass p;
+  p.name = "sun shadow map: exhibit 1";
+  p.mesh = unit_cube();
+  const glm::mat4 bound = glm::scale(
+      glm::translate(object_to_world, sdf_morph::objectBoundCenter()), BOUND_HALF * 2.0f);
+  p.instances = {MeshInstance{bound, glm::vec4(0.0f)}};
+  p.colour = "";
+  p.depth = SUN_MAP_TARGET;
+  p.cull = CullMode::Front;  // back faces, as for the camera
+  p.fragment = "museum/sdf_exhibit_shadow.frag";
+  p.view = sun_pass_view(f.sun);
+  p.uniforms = sdf_morph::morph_shader_uniforms(f.morph);
+  ShaderUniform inv{"u_exhibit_inv_model", 16, {}};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) inv.values.push_back(f.inv_model[c][r]);
+  p.uniforms.push_back(inv);
+  p.uniforms.push_back({"u_exhibit_scale", 1, {f.scale}});
+  p.uniforms.push_back({"u_exhibit_texel", 1, {f.texel}});
+  const std::vector<ShaderUniform> sun = sun_view_uniforms(f.sun);
+  p.uniforms.insert(p.uniforms.end(), sun.begin(), sun.end());
+  p.shade_depth = [f](const MeshFragment& frag, glm::vec4& c, float& z) {
+    c = glm::vec4(1.0f);
+    return exhibit_sun_depth(f, frag.world_position, z);
   };
   return p;
 }

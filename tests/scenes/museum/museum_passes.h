@@ -1,6 +1,7 @@
 #pragma once
 // Runs the museum plan's own passes on the CPU, one sample at the pixel centres, into targets a
-// test can read: the hall's colour and the depth after the passes named (in plan order).
+// test can read: the hall's colour and the depth after the setup passes (the sun's shadow map) and
+// the passes named (in plan order), and the sun's shadow map.
 #include <memory>
 #include <set>
 #include <string>
@@ -11,7 +12,7 @@
 namespace sdfreel::test {
 
 struct MuseumTargets {
-  ImageRGBA colour, depth;
+  ImageRGBA colour, depth, sun_map;
 };
 
 inline MuseumTargets run_museum_passes(const FrameContext& ctx,
@@ -30,9 +31,11 @@ inline MuseumTargets run_museum_passes(const FrameContext& ctx,
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   targets.clear();
   RayStats stats;
+  for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
   for (const Pass& pass : plan.passes)
     if (names.count(pass_name(pass))) run_pass(pass, pc, targets, stats);
-  return {targets.get("hall", "test"), targets.get(DEPTH_TARGET, "test")};
+  return {targets.get("hall", "test"), targets.get(DEPTH_TARGET, "test"),
+          targets.get("sun_shadow", "test")};
 }
 
 }  // namespace sdfreel::test
