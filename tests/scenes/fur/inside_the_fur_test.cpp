@@ -2,9 +2,7 @@
 // the skin, 4 cm ahead, is drawn, not cut away by the near plane to show the case through it.
 #include <gtest/gtest.h>
 
-#include <memory>
-
-#include "backends/cpu/plan_runner.h"
+#include "scenes/plan_passes.h"
 #include "scenes/registry.h"
 #include "scenes/scene_pixels.h"
 
@@ -20,20 +18,7 @@ TEST(FurInside, TheSkinAheadOfAnEyeInTheFurIsDrawn) {
   ctx.params.set("grow_amount", {0.0});
   finish_frame_context(ctx);
   ctx.march.hit_mask = true;  // colour = hit id: 1 + shape index, the sphere is shape 0
-  std::unique_ptr<Scene> scene = info.make();
-  scene->prepare(ctx);
-  const FramePlan plan = scene->frame_plan(ctx);
-  CpuPassContext pc{ctx,
-                    glm::vec2(0.5f),
-                    make_camera_model(ctx.camera, W, H, plan.near_plane, plan.far_plane),
-                    footprint_angle(ctx.camera.tan_half_fov, H),
-                    1,
-                    16,
-                    true};
-  CpuTargets targets(plan_targets(plan), W, H);
-  targets.clear();
-  RayStats stats;
-  for (const Pass& pass : plan.passes) run_pass(pass, pc, targets, stats);
+  CpuTargets targets = test::run_plan_passes("fur", ctx);
   EXPECT_EQ(targets.get(COLOUR_TARGET, "test").at(W / 2, H / 2)[0], 1.0f);
 }
 

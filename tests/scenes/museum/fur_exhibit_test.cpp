@@ -7,7 +7,7 @@
 #include <cstring>
 #include <set>
 
-#include "scenes/museum/museum_passes.h"
+#include "scenes/plan_passes.h"
 #include "scenes/registry.h"
 #include "scenes/scene_pixels.h"
 
@@ -24,11 +24,7 @@ ImageRGBA hall_at(double time, double push_time, bool ids = false) {
   ctx.params.set("fur_push_times", {push_time, -1.0, -1.0});
   finish_frame_context(ctx);
   ctx.march.hit_mask = ids;
-  std::unique_ptr<Scene> scene = find_scene("museum")->make();
-  scene->prepare(ctx);
-  std::set<std::string> all;
-  for (const Pass& pass : scene->frame_plan(ctx).passes) all.insert(pass_name(pass));
-  return test::run_museum_passes(ctx, all).colour;
+  return test::run_plan_passes("museum", ctx).get("hall", "test");
 }
 
 bool same(const ImageRGBA& a, const ImageRGBA& b) {
