@@ -46,8 +46,7 @@ std::optional<BenchConfig> adaptive_config_named(const std::string& name) {
   s = end + 1;
   const long maximum = std::strtol(s, &end, 10);
   if (end == s || *end != '\0') return std::nullopt;
-  if (!(threshold >= 0.0 && threshold <= 1.0) || minimum < 1 || maximum < minimum ||
-      maximum > 1024)
+  if (!(threshold >= 0.0 && threshold <= 1.0) || minimum < 1 || maximum < minimum || maximum > 1024)
     return std::nullopt;
   return adaptive_config(float(threshold), int(minimum), int(maximum));
 }
