@@ -202,7 +202,8 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
         program(FULL_SCREEN_VERTEX, ray.shader.empty() ? scene.shader : ray.shader);
     packable = ray.depth.empty() && driver_.program(id).uniforms.count("u_packed") != 0;
   }
-  if (!live_pixels_) upload_packing(std::vector<uint8_t>(1, 0), 1, 1);  // bound, never read
+  // Bound in every round (programs read all their samplers); used only in packed rounds.
+  if (!live_pixels_) upload_packing(std::vector<uint8_t>(1, 0), 1, 1);
   bool packed = false;
   // Setup passes once, at pixel centres, into the per-frame targets (cleared once here).
   for (size_t k = 0; k < plan_target_count; ++k)
