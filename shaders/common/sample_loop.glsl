@@ -18,13 +18,25 @@ layout(location = 1) out vec4 frag_sdf_evals;
 // (u_discard_stopped 1: a plan whose only pass is this one, so no other pass reads the pixel).
 uniform sampler2D u_live_mask;
 uniform float u_discard_stopped;
+// Packed rounds (u_packed 1, such plans only): fragment k (row-major from GL's bottom row) traces
+// the k-th live pixel, whose window position u_live_pixels holds at k (x < 0: none left). llvmpipe
+// shades blocks of pixels in lanes, so packing keeps its lanes full as the CPU's packets are, where
+// stopped pixels scattered over the frame would leave most lanes of most blocks discarded.
+uniform sampler2D u_live_pixels;
+uniform float u_packed;
 
 void main() {
-  if (u_discard_stopped != 0.0 && texelFetch(u_live_mask, ivec2(gl_FragCoord.xy), 0).x == 0.0)
+  ivec2 window = ivec2(gl_FragCoord.xy);
+  if (u_packed != 0.0) {
+    vec2 live = texelFetch(u_live_pixels, window, 0).xy;
+    if (live.x < 0.0) discard;
+    window = ivec2(live);
+  } else if (u_discard_stopped != 0.0 && texelFetch(u_live_mask, window, 0).x == 0.0) {
     discard;
+  }
   // GL's window origin is bottom-left; ImageRGBA's row 0 is the top row.
-  int x = int(gl_FragCoord.x);
-  int y = u_resolution.y - 1 - int(gl_FragCoord.y);
+  int x = window.x;
+  int y = u_resolution.y - 1 - window.y;
   RayStats stats = RayStats(0u, 0u, 0u);
   precise vec3 dir = primary_ray_dir(float(x) + u_sample_offset.x, float(y) + u_sample_offset.y);
   frag_color = vec4(radiance(Ray(u_camera_origin, dir, u_pixel_angle), stats), 1.0);

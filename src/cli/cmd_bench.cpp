@@ -17,7 +17,9 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 
+#include "bench/adaptive_configs.h"
 #include "bench/backend_table.h"
 #include "bench/csv.h"
 #include "bench/metrics.h"
@@ -317,6 +319,12 @@ int run_bench(const BenchOptions& o) {
       if (std::none_of(configs.begin(), configs.end(),
                        [&](const BenchConfig& k) { return bench::same_settings(k, c); }))
         configs.push_back(c);
+  // An adaptive point `--only` names outside the sweep is measured too.
+  for (const std::string& name : o.only)
+    if (const std::optional<BenchConfig> c = bench::adaptive_config_named(name))
+      if (std::none_of(configs.begin(), configs.end(),
+                       [&](const BenchConfig& k) { return bench::same_settings(k, *c); }))
+        configs.push_back(*c);
   if (!o.only.empty())
     configs.erase(std::remove_if(configs.begin(), configs.end(),
                                  [&](const BenchConfig& c) {

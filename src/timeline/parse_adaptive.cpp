@@ -1,21 +1,15 @@
 // [video] adaptive: per-pixel adaptive sampling (render/adaptive_sampling.h). `adaptive = true`
 // takes the quality preset's numbers; a table sets any of them. `samples` keeps meaning fixed
 // sampling, so a timeline gives one or the other.
-#include <cmath>
 
 #include "render/adaptive_sampling.h"
+#include "render/adaptive_target.h"
 #include "timeline/rules.h"
 #include "timeline/sections.h"
 
 namespace sdfreel {
 
 namespace {
-
-// target_db, as the bench measures PSNR on display values in [0, 1]: the per-pixel standard
-// error at which the frame's RMSE would be 10^(-dB / 20).
-float threshold_of_target(double db) {
-  return float(std::pow(10.0, -db / 20.0));
-}
 
 void parse_table(const TomlReader& r, const toml::table& t, AdaptiveSampling& a) {
   r.check_keys(t, "video.adaptive", {"minimum", "maximum", "threshold", "target_db"});
@@ -40,7 +34,7 @@ void parse_table(const TomlReader& r, const toml::table& t, AdaptiveSampling& a)
     const double v = r.number(*target, "video.adaptive.target_db");
     if (!(v >= 1.0 && v <= 120.0))
       r.fail(*target, "video.adaptive.target_db must be in 1..120, got " + format_number(v));
-    a.threshold = threshold_of_target(v);
+    a.threshold = threshold_for_target_db(v);
   }
 }
 

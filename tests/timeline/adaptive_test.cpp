@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "render/adaptive_target.h"
 #include "render/quality.h"
 #include "timeline/fixture.h"
 
@@ -42,7 +43,8 @@ TEST_F(Adaptive, TableSetsKeysAndThePresetFillsTheRest) {
   EXPECT_EQ(tl.adaptive.maximum, 32);
   EXPECT_EQ(tl.adaptive.threshold, 0.002f);
   const Timeline db = load(video_with("adaptive = { target_db = 40 }"));
-  EXPECT_EQ(db.adaptive.threshold, float(std::pow(10.0, -2.0)));
+  EXPECT_EQ(db.adaptive.threshold, threshold_for_target_db(40.0));
+  EXPECT_GT(db.adaptive.threshold, 0.07f);  // 40 dB is below the lanterns' 41.5 at 0.07
 }
 
 TEST_F(Adaptive, TheDocsExampleParses) {

@@ -18,6 +18,7 @@ namespace sdfreel {
   X(PFNGLENABLEPROC, Enable)                                   \
   X(PFNGLDISABLEPROC, Disable)                                 \
   X(PFNGLVIEWPORTPROC, Viewport)                               \
+  X(PFNGLSCISSORPROC, Scissor)                                 \
   X(PFNGLFINISHPROC, Finish)                                   \
   X(PFNGLDEPTHFUNCPROC, DepthFunc)                             \
   X(PFNGLDEPTHMASKPROC, DepthMask)                             \

@@ -328,9 +328,14 @@ void GlDriver::run(const GlPass& pass) {
     else
       gl_.BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   }
+  if (pass.scissor_rows > 0) {
+    gl_.Enable(GL_SCISSOR_TEST);
+    gl_.Scissor(0, pass.scissor_first_row, t.width, pass.scissor_rows);
+  }
   gl_.UseProgram(prog.id);
   set_uniforms(pass, prog);
   draw(pass);
+  gl_.Disable(GL_SCISSOR_TEST);  // clears elsewhere must reach every pixel
   gl_.check("pass '" + pass.name + "'");
 }
 

@@ -40,6 +40,8 @@ struct GlPass {
   DepthMode depth = DepthMode::Off;
   GlCull cull = GlCull::None;
   BlendMode blend = BlendMode::Replace;
+  // Draws only into window rows [first, first + count) when count > 0 (the clear is not limited).
+  int scissor_first_row = 0, scissor_rows = 0;
   // Every active non-sampler uniform of the program must be given a value: an unset uniform
   // would silently read 0, the classic way for two backends to drift apart.
   std::vector<ShaderUniform> uniforms;

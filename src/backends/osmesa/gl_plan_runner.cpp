@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "backends/osmesa/frame_uniforms.h"
+#include "backends/osmesa/live_pixel_packing.h"
 #include "render/camera_model.h"
 
 namespace sdfreel {
@@ -14,6 +15,8 @@ constexpr const char* SUM_COLOUR = "sum.colour";  // not names a plan can declar
 constexpr const char* SUM_EVALS = "sum.sdf_evals";
 constexpr const char* SUM_ODD = "sum.odd";
 constexpr const char* LIVE_MASK = "u_live_mask";
+constexpr const char* LIVE_PIXELS = "u_live_pixels";
+constexpr const char* LIVE_SLOTS = "u_live_slots";
 
 ShaderUniform matrix(const std::string& name, const glm::mat4& m) {
   ShaderUniform u{name, 16, {}};
@@ -80,8 +83,9 @@ GlMeshId GlPlanRunner::mesh(const std::shared_ptr<const TriangleMesh>& m) {
 }
 
 void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
-                            const std::vector<ShaderUniform>& base) {
+                            const std::vector<ShaderUniform>& base, int packed_rows) {
   GlPass p;
+  p.scissor_rows = packed_rows;
   p.name = pass_name(pass);
   p.clear = false;
   p.uniforms = base;
@@ -96,6 +100,7 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
     append(p.uniforms, ray->uniforms);
     p.textures = scene.textures;
     p.textures.push_back({LIVE_MASK, live_mask_});
+    p.textures.push_back({LIVE_PIXELS, live_pixels_});
   } else if (const auto* m = std::get_if<MeshPass>(&pass)) {
     p.program = program(m->vertex, m->fragment);
     p.mesh = mesh(m->mesh);
@@ -138,17 +143,18 @@ void GlPlanRunner::run_pass(const Pass& pass, const GlSceneInputs& scene,
   driver_.run(p);
 }
 
-void GlPlanRunner::accumulate(bool odd) {
+void GlPlanRunner::accumulate(bool odd, bool packed) {
   GlPass p;
   p.name = "accumulate samples";
   p.program = program(FULL_SCREEN_VERTEX, "common/accumulate.glsl");
   p.target = targets_.framebuffer({SUM_COLOUR, SUM_EVALS, SUM_ODD}, "", p.name);
   p.clear = false;
   p.blend = BlendMode::Add;
-  p.uniforms = {{"u_odd", 1, {odd ? 1.0f : 0.0f}}};
+  p.uniforms = {{"u_odd", 1, {odd ? 1.0f : 0.0f}}, {"u_packed", 1, {packed ? 1.0f : 0.0f}}};
   p.textures = {{"u_colour", targets_.texture(COLOUR_TARGET, p.name)},
                 {"u_sdf_evals", targets_.texture(SDF_EVALS_TARGET, p.name)},
-                {LIVE_MASK, live_mask_}};
+                {LIVE_MASK, live_mask_},
+                {LIVE_SLOTS, live_slots_}};
   driver_.run(p);
 }
 
@@ -160,6 +166,13 @@ void GlPlanRunner::upload_live_mask(const std::vector<uint8_t>& live, int width,
     for (int x = 0; x < width; ++x)
       t.texels[size_t(y) * width + x] = float(live[size_t(height - 1 - y) * width + x]);
   live_mask_ = driver_.upload_texture(t);
+}
+
+void GlPlanRunner::upload_packing(const std::vector<uint8_t>& live, int width, int height) {
+  const LivePixelPacking p = pack_live_pixels(live, width, height, LIVE_PIXELS, LIVE_SLOTS);
+  live_pixels_ = driver_.upload_texture(p.pixels);
+  live_slots_ = driver_.upload_texture(p.slots);
+  packed_rows_ = p.rows;
 }
 
 ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
@@ -181,13 +194,25 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
   // Only a plan of one ray pass may skip stopped pixels: other passes may read any pixel.
   const bool one_ray_pass = plan.passes.size() == 1 && plan.setup_passes.empty() &&
                             std::holds_alternative<RayPass>(plan.passes[0]);
+  // It may also move them, packed, when it lays down no depth and its shader can (sample_loop).
+  bool packable = false;
+  if (one_ray_pass) {
+    const RayPass& ray = std::get<RayPass>(plan.passes[0]);
+    const GlProgramId id =
+        program(FULL_SCREEN_VERTEX, ray.shader.empty() ? scene.shader : ray.shader);
+    packable = ray.depth.empty() && driver_.program(id).uniforms.count("u_packed") != 0;
+  }
+  // Bound in every round (programs read all their samplers); used only in packed rounds.
+  if (!live_pixels_) upload_packing(std::vector<uint8_t>(1, 0), 1, 1);
+  bool packed = false;
   // Setup passes once, at pixel centres, into the per-frame targets (cleared once here).
   for (size_t k = 0; k < plan_target_count; ++k)
     if (specs[k].per_frame) targets_.clear(specs[k].name);
   if (!plan.setup_passes.empty()) {
     std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, glm::vec2(0.5f));
     base.push_back({"u_discard_stopped", 1, {0.0f}});
-    for (const Pass& pass : plan.setup_passes) run_pass(pass, scene, base);
+    base.push_back({"u_packed", 1, {0.0f}});
+    for (const Pass& pass : plan.setup_passes) run_pass(pass, scene, base, 0);
   }
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
     if (live.round_ends_at(i)) {
@@ -196,13 +221,16 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
       if (live.decide(i, sum, odd) == 0) break;
       upload_live_mask(live.mask(), ctx.width, ctx.height);
       live_mask_full_ = false;
+      packed = packable;
+      if (packed) upload_packing(live.mask(), ctx.width, ctx.height);
     }
     for (size_t k = 0; k < plan_target_count; ++k)
       if (!specs[k].per_frame) targets_.clear(specs[k].name);
     std::vector<ShaderUniform> base = sample_uniforms(ctx, cam, ctx.sample_offsets[size_t(i)]);
     base.push_back({"u_discard_stopped", 1, {one_ray_pass ? 1.0f : 0.0f}});
-    for (const Pass& pass : plan.passes) run_pass(pass, scene, base);
-    accumulate(i & 1);
+    base.push_back({"u_packed", 1, {packed ? 1.0f : 0.0f}});
+    for (const Pass& pass : plan.passes) run_pass(pass, scene, base, packed ? packed_rows_ : 0);
+    accumulate(i & 1, packed);
   }
   ImageRGBA img = driver_.read_rgba(targets_.framebuffer({SUM_COLOUR}, "", "read back"));
   const ImageRGBA evals = driver_.read_rgba(targets_.framebuffer({SUM_EVALS}, "", "read back"));

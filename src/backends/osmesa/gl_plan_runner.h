@@ -11,7 +11,9 @@
 // (all samples, and odd list positions in a third sum target) are read back, the host decides
 // which pixels go on with the CPU's code (render/live_pixels.h) and uploads a mask of live pixels;
 // the accumulation adds only live pixels, and a plan of one ray pass discards stopped pixels
-// before tracing. Fixed sampling is one round with every pixel live.
+// before tracing. Fixed sampling is one round with every pixel live. A plan of one ray pass
+// without depth traces its later rounds packed (live_pixel_packing.h): the live pixels fill the
+// first rows, and the draw covers only those rows.
 #include <map>
 #include <memory>
 #include <string>
@@ -44,8 +46,9 @@ class GlPlanRunner {
  private:
   GlMeshId mesh(const std::shared_ptr<const TriangleMesh>& m);
   void run_pass(const Pass& pass, const GlSceneInputs& scene,
-                const std::vector<ShaderUniform>& base);
-  void accumulate(bool odd);
+                const std::vector<ShaderUniform>& base, int packed_rows);
+  void accumulate(bool odd, bool packed);
+  void upload_packing(const std::vector<uint8_t>& live, int width, int height);
   void upload_live_mask(const std::vector<uint8_t>& live, int width, int height);
 
   GlDriver& driver_;
@@ -53,6 +56,8 @@ class GlPlanRunner {
   std::map<std::string, GlProgramId> programs_;                     // by "vertex|fragment"
   std::map<std::shared_ptr<const TriangleMesh>, GlMeshId> meshes_;  // owns: pointers stay unique
   GLuint live_mask_ = 0;
+  GLuint live_pixels_ = 0, live_slots_ = 0;  // packed rounds' slot -> pixel and pixel -> slot
+  int packed_rows_ = 0;
   bool live_mask_full_ = false;  // every pixel live, at live_mask_size_
   glm::ivec2 live_mask_size_{0};
 };
