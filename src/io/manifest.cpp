@@ -4,8 +4,10 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -35,14 +37,38 @@ json manifest_frame_json(const ManifestFrame& f) {
           {"sdf_evals_per_pixel", f.sdf_evals_per_pixel}};
 }
 
+namespace {
+
+// An integer field, exactly and in lo..hi: a number too big for 64 bits parses as a double, and
+// converting that to an integer is undefined (found by fuzz_manifest); a 64-bit value narrowed
+// to int would wrap (an index of 2^40 to frame 0).
+int int_field(const json& v, const std::string& name, int64_t lo, int64_t hi) {
+  if (!v.is_number_integer())
+    throw std::runtime_error("malformed manifest: " + name + " is not an integer");
+  const bool above =
+      v.is_number_unsigned() ? v.get<uint64_t>() > uint64_t(hi) : v.get<int64_t>() > hi;
+  if (above || (!v.is_number_unsigned() && v.get<int64_t>() < lo))
+    throw std::runtime_error("malformed manifest: " + name + " " + v.dump() + " is outside " +
+                             std::to_string(lo) + ".." + std::to_string(hi));
+  return int(v.get<int64_t>());
+}
+
+constexpr int64_t kIntMax = std::numeric_limits<int>::max();
+
+// "NUM/DEN", both whole numbers that fit 64 bits (sscanf's %ld is undefined past them).
+bool parse_fps(const std::string& s, int64_t& num, int64_t& den) {
+  const char* end = s.data() + s.size();
+  const auto n = std::from_chars(s.data(), end, num);
+  if (n.ec != std::errc() || n.ptr == end || *n.ptr != '/') return false;
+  const auto d = std::from_chars(n.ptr + 1, end, den);
+  return d.ec == std::errc() && d.ptr == end;
+}
+
+}  // namespace
+
 ManifestFrame manifest_frame_from_json(const json& f, int frame_count) {
   ManifestFrame fr;
-  // Read wide and range-checked: an index of 2^40 must not wrap to frame 0.
-  const int64_t index = f.at("index").get<int64_t>();
-  if (index < 0 || index >= frame_count)
-    throw std::runtime_error("malformed manifest: frame index " + std::to_string(index) +
-                             " is outside 0.." + std::to_string(frame_count - 1));
-  fr.index = int(index);
+  fr.index = int_field(f.at("index"), "frame index", 0, int64_t(frame_count) - 1);
   fr.video_time = f.at("video_time");
   fr.scene_time = f.at("scene_time");
   fr.linear_hash = f.at("linear_md5");
@@ -87,13 +113,13 @@ Manifest manifest_from_json(const std::string& text) {
     h.scene = j.at("scene");
     h.backend = j.at("backend");
     h.versions = j.at("versions").get<std::map<std::string, std::string>>();
-    h.width = j.at("resolution").at(0);
-    h.height = j.at("resolution").at(1);
+    h.width = int_field(j.at("resolution").at(0), "width", 1, kIntMax);
+    h.height = int_field(j.at("resolution").at(1), "height", 1, kIntMax);
     const std::string fps = j.at("fps");
-    if (std::sscanf(fps.c_str(), "%ld/%ld", &h.fps_num, &h.fps_den) != 2)
-      throw std::runtime_error("bad fps '" + fps + "'");
-    h.frame_count = j.at("frame_count");
-    h.samples = j.at("samples");
+    if (!parse_fps(fps, h.fps_num, h.fps_den))
+      throw std::runtime_error("malformed manifest: bad fps '" + fps + "'");
+    h.frame_count = int_field(j.at("frame_count"), "frame_count", 0, kIntMax);
+    h.samples = int_field(j.at("samples"), "samples", 1, kIntMax);
     h.adaptive = j.value("adaptive", "");
     h.quality = j.at("quality");
     h.color_config = j.at("color").at("config");

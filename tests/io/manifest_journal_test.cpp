@@ -101,6 +101,32 @@ TEST(ManifestJournal, IndexOutsideTheTimelineIsRefusedNotWrapped) {
   EXPECT_THROW(manifest_from_json(text), std::runtime_error);
 }
 
+// Found by fuzz_manifest: a number too big for 64 bits parses as a double, whose conversion to
+// int was undefined; a wide integer narrowed to int wrapped (frame_count 2^32 + 4 read as 4).
+TEST(ManifestJournal, HugeFractionalOrWideNumbersAreRefusedNotConverted) {
+  Manifest m{header(4), {}};
+  m.frames[0] = frame(0);
+  const std::string good = manifest_to_json(m);
+  ASSERT_NO_THROW(manifest_from_json(good));
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+  };
+  EXPECT_THROW(manifest_from_json(with("\"samples\": 1", "\"samples\": " + std::string(40, '6'))),
+               std::runtime_error);
+  EXPECT_THROW(manifest_from_json(with("\"frame_count\": 4", "\"frame_count\": 4294967300")),
+               std::runtime_error);
+  EXPECT_THROW(manifest_from_json(with("\"frame_count\": 4", "\"frame_count\": 4.5")),
+               std::runtime_error);
+  EXPECT_THROW(manifest_from_json(with("64,", "1e300,")), std::runtime_error);
+  EXPECT_THROW(manifest_from_json(with("\"index\": 0", "\"index\": 18446744073709551615")),
+               std::runtime_error);
+  EXPECT_THROW(manifest_from_json(with("\"fps\": \"30/1\"", "\"fps\": \"99999999999999999999/1\"")),
+               std::runtime_error);
+}
+
 TEST(BoundedRead, RefusesFifosDevicesAndOversizedFiles) {
   Folder dir("bounded");
   const std::string fifo = dir.str() + "/fifo";
