@@ -32,8 +32,8 @@ struct MeshPassCache::Data {
   // Varyings of every placed vertex, then of this sample's near-clipped corners.
   std::vector<glm::vec3> world, normal;
   std::vector<glm::vec2> uv;
-  std::vector<glm::vec4> clip;        // this sample's clip positions of the placed vertices
-  std::vector<WindowVertex> window;   // window transforms, same order as the varyings
+  std::vector<glm::vec4> clip;            // this sample's clip positions of the placed vertices
+  std::vector<WindowVertex> window;       // window transforms, same order as the varyings
   std::vector<RasterTriangle> triangles;  // this sample's, in mesh order, reused
   std::vector<std::vector<unsigned>> bins;
 };

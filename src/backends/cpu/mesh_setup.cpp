@@ -55,10 +55,10 @@ void emit(const unsigned idx[3], unsigned instance, CullMode cull, const glm::iv
   const bool front = area > 0.0;
   if ((cull == CullMode::Back && !front) || (cull == CullMode::Front && front)) return;
   RasterTriangle t;
-  if (!centre_range(std::min({p[0].x, p[1].x, p[2].x}), std::max({p[0].x, p[1].x, p[2].x}),
-                    size.x, t.x0, t.x1) ||
-      !centre_range(std::min({p[0].y, p[1].y, p[2].y}), std::max({p[0].y, p[1].y, p[2].y}),
-                    size.y, t.y0, t.y1))
+  if (!centre_range(std::min({p[0].x, p[1].x, p[2].x}), std::max({p[0].x, p[1].x, p[2].x}), size.x,
+                    t.x0, t.x1) ||
+      !centre_range(std::min({p[0].y, p[1].y, p[2].y}), std::max({p[0].y, p[1].y, p[2].y}), size.y,
+                    t.y0, t.y1))
     return;
   const int order[3] = {0, front ? 1 : 2, front ? 2 : 1};
   for (int k = 0; k < 3; ++k) t.v[k] = idx[order[k]];
