@@ -50,10 +50,16 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
   const glm::ivec2 size(drawn.width, drawn.height);
   MeshPassCache::Data& d = cache.data();
   place_vertices(pass, d);
-  setup_triangles(pass, view_projection(pass, pc), size, d);
-  bin_by_tile(d, size, pc.tile_size, d.bins);
+  setup_batches(pass, view_projection(pass, pc), size, pc.tile_size, pc.threads, d);
+  const VertexArrays placed = d.placed();
   for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {
-    for (unsigned i : d.bins[size_t(t.index)]) rasterise(d.triangles[i], d, pass, t, size.y, out);
+    for (const TriangleBatch& b : d.batches) {  // in mesh order
+      const VertexArrays clipped = b.clipped();
+      for (unsigned i : b.bins[size_t(t.index)]) {
+        const RasterTriangle& s = b.triangles[i];
+        rasterise(s, s.clipped ? clipped : placed, pass, t, size.y, out);
+      }
+    }
   });
 }
 

@@ -18,8 +18,8 @@ bool top_left(const glm::dvec2& a, const glm::dvec2& b) {
 
 }  // namespace
 
-void rasterise(const RasterTriangle& s, const MeshPassCache::Data& d, const MeshPass& pass,
-               const Tile& t, int height, const MeshTargets& out) {
+void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& pass, const Tile& t,
+               int height, const MeshTargets& out) {
   // The triangle's pixels within the tile, in window coordinates (image row y is window row
   // height - 1 - y).
   const int x_lo = std::max(s.x0, t.x0), x_hi = std::min(s.x1, t.x1 - 1);

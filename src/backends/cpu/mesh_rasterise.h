@@ -14,7 +14,8 @@ struct MeshTargets {
   const ImageInputs* inputs;
 };
 
-void rasterise(const RasterTriangle& s, const MeshPassCache::Data& d, const MeshPass& pass,
-               const Tile& t, int height, const MeshTargets& out);
+// v: the arrays s's vertex indices refer to.
+void rasterise(const RasterTriangle& s, const VertexArrays& v, const MeshPass& pass, const Tile& t,
+               int height, const MeshTargets& out);
 
 }  // namespace sdfreel

@@ -1,11 +1,18 @@
 #include "backends/cpu/mesh_setup.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace sdfreel {
 
 namespace {
+
+// Batches are runs of whole instances with at least this many triangles, so that a pass of many
+// instances (fur shells) sets up on every thread and one of a few triangles stays on one.
+constexpr size_t MIN_BATCH_TRIANGLES = 4096;
 
 // A vertex after the vertex stage: clip position and the varyings.
 struct ClipVertex {
@@ -44,11 +51,10 @@ WindowVertex to_window(const glm::vec4& clip, int width, int height) {
           clip.z / w * 0.5 + 0.5};
 }
 
-// Appends triangle idx (indices into d's vertex arrays) unless it has no area, is culled or covers
-// no pixel centre of the frame.
-void emit(const unsigned idx[3], unsigned instance, CullMode cull, const glm::ivec2& size,
-          MeshPassCache::Data& d) {
-  const WindowVertex* w = d.window.data();
+// Appends triangle idx (indices into window) unless it has no area, is culled or covers no pixel
+// centre of the frame.
+void emit(const WindowVertex* w, const unsigned idx[3], bool clipped, unsigned instance,
+          CullMode cull, const glm::ivec2& size, std::vector<RasterTriangle>& out) {
   const glm::dvec2 p[3] = {w[idx[0]].p, w[idx[1]].p, w[idx[2]].p};
   const double area = edge(p[0], p[1], p[2]);
   if (area == 0.0) return;
@@ -65,16 +71,89 @@ void emit(const unsigned idx[3], unsigned instance, CullMode cull, const glm::iv
   t.instance = instance;
   t.area = edge(p[order[0]], p[order[1]], p[order[2]]);
   t.front = front;
-  d.triangles.push_back(t);
+  t.clipped = clipped;
+  out.push_back(t);
 }
 
-// Appends a near-clipped corner to the vertex arrays; returns its index.
-unsigned add_clipped(const ClipVertex& c, const glm::ivec2& size, MeshPassCache::Data& d) {
-  d.world.push_back(c.world);
-  d.normal.push_back(c.normal);
-  d.uv.push_back(c.uv);
-  d.window.push_back(to_window(c.clip, size.x, size.y));
-  return unsigned(d.window.size() - 1);
+// Appends a near-clipped corner to the batch's vertices; returns its index there.
+unsigned add_clipped(const ClipVertex& c, const glm::ivec2& size, TriangleBatch& b) {
+  b.world.push_back(c.world);
+  b.normal.push_back(c.normal);
+  b.uv.push_back(c.uv);
+  b.window.push_back(to_window(c.clip, size.x, size.y));
+  return unsigned(b.window.size() - 1);
+}
+
+// The triangles whose pixel range touches each tile, in mesh order (so each pixel still sees its
+// fragments in the same order whatever the tiling).
+void bin_by_tile(const glm::ivec2& size, int tile_size, TriangleBatch& b) {
+  const int cols = (size.x + tile_size - 1) / tile_size;
+  const int rows = (size.y + tile_size - 1) / tile_size;
+  b.bins.resize(size_t(cols * rows));
+  for (std::vector<unsigned>& bin : b.bins) bin.clear();
+  for (size_t i = 0; i < b.triangles.size(); ++i) {
+    const RasterTriangle& t = b.triangles[i];
+    // Window rows y0..y1 are image rows height - 1 - y1 .. height - 1 - y0.
+    const int r0 = (size.y - 1 - t.y1) / tile_size, r1 = (size.y - 1 - t.y0) / tile_size;
+    const int c0 = t.x0 / tile_size, c1 = t.x1 / tile_size;
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) b.bins[size_t(r * cols + c)].push_back(unsigned(i));
+  }
+}
+
+// One batch: its vertices' clip positions and window transforms, then its triangles in mesh
+// order, near-clipping those that cross the near plane, then its bins.
+void setup_batch(const MeshPass& pass, const glm::mat4& view_proj, const glm::ivec2& size,
+                 int tile_size, MeshPassCache::Data& d, TriangleBatch& b) {
+  const TriangleMesh& m = *pass.mesh;
+  const size_t nv = m.vertex_count();
+  for (size_t i = b.first_instance * nv; i < b.end_instance * nv; ++i) {
+    d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
+    d.window[i] = to_window(d.clip[i], size.x, size.y);
+  }
+  b.triangles.clear();
+  b.world.clear(), b.normal.clear(), b.uv.clear(), b.window.clear();
+  for (size_t n_inst = b.first_instance; n_inst < b.end_instance; ++n_inst) {
+    const unsigned base = unsigned(n_inst * nv);
+    for (size_t t = 0; t < m.triangle_count(); ++t) {
+      unsigned idx[3];
+      bool in_front = true;
+      for (int k = 0; k < 3; ++k) {
+        idx[k] = base + m.index(t * 3 + size_t(k));
+        const glm::vec4& c = d.clip[idx[k]];
+        in_front = in_front && c.z + c.w >= 0.0f;
+      }
+      // A triangle wholly in front of the near plane is its own clipped self.
+      if (in_front) {
+        emit(d.window.data(), idx, false, unsigned(n_inst), pass.cull, size, b.triangles);
+        continue;
+      }
+      ClipVertex v[3];
+      for (int k = 0; k < 3; ++k) {
+        const unsigned o = idx[k];
+        v[k] = ClipVertex{d.clip[o], d.world[o], d.normal[o], d.uv[o]};
+      }
+      ClipVertex clipped[6];
+      const int n = clip_near(v, clipped);
+      for (int c = 0; c < n; ++c) {
+        unsigned cidx[3];
+        for (int k = 0; k < 3; ++k) cidx[k] = add_clipped(clipped[c * 3 + k], size, b);
+        emit(b.window.data(), cidx, true, unsigned(n_inst), pass.cull, size, b.triangles);
+      }
+    }
+  }
+  bin_by_tile(size, tile_size, b);
+}
+
+// Runs fn(i) for i in [0, n) on `threads` threads (0: all cores).
+template <class F>
+void parallel_indices(size_t n, int threads, F&& fn) {
+  if (threads == 1 || n < 2) {
+    for (size_t i = 0; i < n; ++i) fn(i);
+    return;
+  }
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] { tbb::parallel_for(size_t(0), n, [&](size_t i) { fn(i); }); });
 }
 
 }  // namespace
@@ -91,10 +170,10 @@ void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   if (d.placed_for == &pass) return;
   const TriangleMesh& m = *pass.mesh;
   const size_t nv = m.vertex_count();
-  d.placed = pass.instances.size() * nv;
-  d.world.resize(d.placed);
-  d.normal.resize(d.placed);
-  d.uv.resize(d.placed);
+  const size_t placed = pass.instances.size() * nv;
+  d.world.resize(placed);
+  d.normal.resize(placed);
+  d.uv.resize(placed);
   size_t o = 0;
   for (const MeshInstance& inst : pass.instances) {
     const glm::mat3 normal_matrix(inst.model);
@@ -117,66 +196,21 @@ void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   d.placed_for = &pass;
 }
 
-void setup_triangles(const MeshPass& pass, const glm::mat4& view_proj, const glm::ivec2& size,
-                     MeshPassCache::Data& d) {
-  // Drop the previous sample's clipped corners.
-  d.world.resize(d.placed);
-  d.normal.resize(d.placed);
-  d.uv.resize(d.placed);
-  d.clip.resize(d.placed);
-  d.window.resize(d.placed);
-  for (size_t i = 0; i < d.placed; ++i) {
-    d.clip[i] = view_proj * glm::vec4(d.world[i], 1.0f);
-    d.window[i] = to_window(d.clip[i], size.x, size.y);
+void setup_batches(const MeshPass& pass, const glm::mat4& view_proj, const glm::ivec2& size,
+                   int tile_size, int threads, MeshPassCache::Data& d) {
+  const size_t instances = pass.instances.size();
+  const size_t triangles = instances * pass.mesh->triangle_count();
+  const size_t n = std::max<size_t>(1, std::min(instances, triangles / MIN_BATCH_TRIANGLES));
+  d.clip.resize(d.world.size());
+  d.window.resize(d.world.size());
+  d.batches.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    d.batches[i].first_instance = instances * i / n;
+    d.batches[i].end_instance = instances * (i + 1) / n;
   }
-  d.triangles.clear();
-  const TriangleMesh& m = *pass.mesh;
-  const size_t nv = m.vertex_count();
-  for (size_t n_inst = 0; n_inst < pass.instances.size(); ++n_inst) {
-    const unsigned base = unsigned(n_inst * nv);
-    for (size_t t = 0; t < m.triangle_count(); ++t) {
-      unsigned idx[3];
-      bool in_front = true;
-      for (int k = 0; k < 3; ++k) {
-        idx[k] = base + m.index(t * 3 + size_t(k));
-        const glm::vec4& c = d.clip[idx[k]];
-        in_front = in_front && c.z + c.w >= 0.0f;
-      }
-      // A triangle wholly in front of the near plane is its own clipped self.
-      if (in_front) {
-        emit(idx, unsigned(n_inst), pass.cull, size, d);
-        continue;
-      }
-      ClipVertex v[3];
-      for (int k = 0; k < 3; ++k) {
-        const unsigned o = idx[k];
-        v[k] = ClipVertex{d.clip[o], d.world[o], d.normal[o], d.uv[o]};
-      }
-      ClipVertex clipped[6];
-      const int n = clip_near(v, clipped);
-      for (int c = 0; c < n; ++c) {
-        unsigned cidx[3];
-        for (int k = 0; k < 3; ++k) cidx[k] = add_clipped(clipped[c * 3 + k], size, d);
-        emit(cidx, unsigned(n_inst), pass.cull, size, d);
-      }
-    }
-  }
-}
-
-void bin_by_tile(const MeshPassCache::Data& d, const glm::ivec2& size, int tile_size,
-                 std::vector<std::vector<unsigned>>& bins) {
-  const int cols = (size.x + tile_size - 1) / tile_size;
-  const int rows = (size.y + tile_size - 1) / tile_size;
-  bins.resize(size_t(cols * rows));
-  for (std::vector<unsigned>& b : bins) b.clear();
-  for (size_t i = 0; i < d.triangles.size(); ++i) {
-    const RasterTriangle& t = d.triangles[i];
-    // Window rows y0..y1 are image rows height - 1 - y1 .. height - 1 - y0.
-    const int r0 = (size.y - 1 - t.y1) / tile_size, r1 = (size.y - 1 - t.y0) / tile_size;
-    const int c0 = t.x0 / tile_size, c1 = t.x1 / tile_size;
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) bins[size_t(r * cols + c)].push_back(unsigned(i));
-  }
+  parallel_indices(n, threads, [&](size_t i) {
+    setup_batch(pass, view_proj, size, tile_size, d, d.batches[i]);
+  });
 }
 
 }  // namespace sdfreel

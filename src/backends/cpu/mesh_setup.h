@@ -12,16 +12,12 @@ namespace sdfreel {
 // holds this pass's (world positions and normals do not depend on the sample offset).
 void place_vertices(const MeshPass& pass, MeshPassCache::Data& d);
 
-// This sample's triangles on a target of `size` into d.triangles, in mesh order: those with no
-// area, culled, or whose bounds hold no pixel centre of the frame are dropped (they would cover
-// nothing).
-void setup_triangles(const MeshPass& pass, const glm::mat4& view_proj, const glm::ivec2& size,
-                     MeshPassCache::Data& d);
-
-// The triangles whose pixel range touches each tile, in mesh order (so each pixel still sees its
-// fragments in the same order whatever the tiling).
-void bin_by_tile(const MeshPassCache::Data& d, const glm::ivec2& size, int tile_size,
-                 std::vector<std::vector<unsigned>>& bins);
+// This sample's triangles on a target of `size` into d.batches, in mesh order, binned by tiles of
+// tile_size: those with no area, culled, or whose bounds hold no pixel centre of the frame are
+// dropped (they would cover nothing). Batches of whole instances run on `threads` threads (0: all
+// cores); the result does not depend on how many.
+void setup_batches(const MeshPass& pass, const glm::mat4& view_proj, const glm::ivec2& size,
+                   int tile_size, int threads, MeshPassCache::Data& d);
 
 // edge(a, b, p): twice the signed area of (a, b, p), positive when p is left of a -> b.
 inline double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
