@@ -49,7 +49,7 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
     throw std::runtime_error("mesh pass '" + pass.name + "': colour and depth sizes differ");
   const glm::ivec2 size(drawn.width, drawn.height);
   MeshPassCache::Data& d = cache.data();
-  place_vertices(pass, d);
+  place_vertices(pass, pc.threads, d);
   setup_batches(pass, view_projection(pass, pc), size, pc.tile_size, pc.threads, d);
   const VertexArrays placed = d.placed();
   for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {

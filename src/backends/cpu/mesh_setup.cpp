@@ -166,7 +166,7 @@ bool centre_range(double lo, double hi, int n, int& first, int& last) {
   return true;
 }
 
-void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
+void place_vertices(const MeshPass& pass, int threads, MeshPassCache::Data& d) {
   if (d.placed_for == &pass) return;
   const TriangleMesh& m = *pass.mesh;
   const size_t nv = m.vertex_count();
@@ -174,25 +174,26 @@ void place_vertices(const MeshPass& pass, MeshPassCache::Data& d) {
   d.world.resize(placed);
   d.normal.resize(placed);
   d.uv.resize(placed);
-  size_t o = 0;
-  for (const MeshInstance& inst : pass.instances) {
+  // Each instance's vertices on their own (`place` is a pure function): in parallel.
+  parallel_indices(pass.instances.size(), threads, [&](size_t n) {
+    const MeshInstance& inst = pass.instances[n];
     const glm::mat3 normal_matrix(inst.model);
-    for (size_t i = 0; i < nv; ++i, ++o) {
+    for (size_t i = 0, o = n * nv; i < nv; ++i, ++o) {
       const glm::vec3 position(m.positions[i * 3], m.positions[i * 3 + 1], m.positions[i * 3 + 2]);
       const glm::vec3 normal = m.normals.empty() ? glm::vec3(0.0f)
                                                  : glm::vec3(m.normals[i * 3], m.normals[i * 3 + 1],
                                                              m.normals[i * 3 + 2]);
       if (pass.place) {
-        const PlacedVertex placed = pass.place(inst, position, normal);
-        d.world[o] = placed.world;
-        d.normal[o] = placed.normal;
+        const PlacedVertex placed_vertex = pass.place(inst, position, normal);
+        d.world[o] = placed_vertex.world;
+        d.normal[o] = placed_vertex.normal;
       } else {
         d.world[o] = glm::vec3(inst.model * glm::vec4(position, 1.0f));
         d.normal[o] = normal_matrix * normal;
       }
       d.uv[o] = m.uvs.empty() ? glm::vec2(0.0f) : glm::vec2(m.uvs[i * 2], m.uvs[i * 2 + 1]);
     }
-  }
+  });
   d.placed_for = &pass;
 }
 

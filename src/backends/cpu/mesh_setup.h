@@ -9,8 +9,9 @@
 namespace sdfreel {
 
 // Places every vertex of every instance in world space with its normal and uv, unless d already
-// holds this pass's (world positions and normals do not depend on the sample offset).
-void place_vertices(const MeshPass& pass, MeshPassCache::Data& d);
+// holds this pass's (world positions and normals do not depend on the sample offset). Instances
+// run on `threads` threads (0: all cores).
+void place_vertices(const MeshPass& pass, int threads, MeshPassCache::Data& d);
 
 // This sample's triangles on a target of `size` into d.batches, in mesh order, binned by tiles of
 // tile_size: those with no area, culled, or whose bounds hold no pixel centre of the frame are
