@@ -47,6 +47,14 @@ vec3 ridgeNormal(float lens_coord, float across, float y, const CardUniforms& u,
   return normalize3(vec3(across * RIDGE_SLOPE + n.x * u.ridge_noise, n.y * u.ridge_noise, 1.0f));
 }
 
+// texelFetchRepeat(*tex.print, column, row), through tex.print_by_strip when there is one.
+glm::vec4 print_texel(const CardTextures& tex, int views, float column, float row) {
+  if (!tex.print_by_strip) return texelFetchRepeat(*tex.print, column, row);
+  const int x = wrap_texel(column, tex.print->width), y = wrap_texel(row, tex.print->height);
+  const float* c = tex.print_by_strip->at(x / views, (x % views) * tex.print->height + y);
+  return glm::vec4(c[0], c[1], c[2], c[3]);
+}
+
 }  // namespace
 
 vec3 to_local_point(const glm::mat4& m, const vec3& p) {
@@ -95,7 +103,7 @@ vec3 frontColour(const vec3& p, const vec3& d, const CardUniforms& u, const Card
   const float column = dm::clamp(dm::floor(x * views), 0.0f, lenses * views - 1.0f);
   const float down = (CARD_CENTRE_Y + CARD_HALF_HEIGHT - p.y) * (0.5f / CARD_HALF_HEIGHT);
   const float row = dm::floor((down + u.scroll) * rows);
-  const vec3 albedo = vec3(texelFetchRepeat(*tex.print, column, row));
+  const vec3 albedo = vec3(print_texel(tex, u.views, column, row));
   const vec3 n = ridgeNormal(lens_coord, across, p.y, u, tex);
   const vec3 v = normalize3(-d);
   const vec3 diffuse = albedo * (AMBIENT + KEY * dm::max(u.light.z, 0.0f));

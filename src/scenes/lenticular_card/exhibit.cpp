@@ -64,11 +64,12 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrint
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
   const glm::vec3 forward = ctx.camera.forward;
   // The lambdas own what they read: the textures outlive the plan's scene.
-  const std::shared_ptr<const Texture> print = prints.print, ridges = prints.ridges;
-  auto shade = [u, cam, forward, print, ridges](const Ray& ray, glm::vec3& colour, float& depth,
-                                                bool& keep) {
+  const std::shared_ptr<const Texture> print = prints.print, ridges = prints.ridges,
+                                       by_strip = prints.print_by_strip;
+  auto shade = [u, cam, forward, print, ridges, by_strip](const Ray& ray, glm::vec3& colour,
+                                                          float& depth, bool& keep) {
     float t = 0.0f;
-    keep = shadeCard(ray, u, CardTextures{print.get(), ridges.get()}, colour, t);
+    keep = shadeCard(ray, u, CardTextures{print.get(), ridges.get(), by_strip.get()}, colour, t);
     if (keep) depth = hit_depth(cam, forward, ray.dir, t);
   };
   RayPass pass;

@@ -1,5 +1,6 @@
 #include "scenes/lenticular_card/textures.h"
 
+#include <algorithm>
 #include <mutex>
 #include <stdexcept>
 
@@ -30,6 +31,14 @@ InterlaceLayout card_layout(int views) {
   return InterlaceLayout{views, double(views), false};
 }
 
+Texture by_strip(const Texture& print, int views) {
+  Texture t(print.width / views, print.height * views, print.channels);
+  for (int y = 0; y < print.height; ++y)
+    for (int x = 0; x < print.width; ++x)
+      std::copy_n(print.at(x, y), print.channels, t.at(x / views, (x % views) * print.height + y));
+  return t;
+}
+
 CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<Rgb8Image>& b) {
   if (a.empty() || a.size() != b.size())
     throw std::invalid_argument("lenticular_card: the two prints need the same number of views");
@@ -54,6 +63,7 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
   out.views = int(a.size());
   out.view_height = a[0].height;
   out.print = print;
+  out.print_by_strip = std::make_shared<Texture>(by_strip(*print, out.views));
   out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED));
   out.key = checksum64(bytes.data(), bytes.size()) | 1ull;  // never 0 ("unknown")
   return out;

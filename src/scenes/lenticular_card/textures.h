@@ -18,8 +18,15 @@ constexpr int RIDGE_MAP_SIZE = 64;
 struct CardPrints {
   int lenses = 0, views = 0, view_height = 0;
   std::shared_ptr<const Texture> print, ridges;
-  uint64_t key = 0;  // names the texels (Scene::shader_textures_key)
+  std::shared_ptr<const Texture> print_by_strip;  // the CPU's copy of print: by_strip()
+  uint64_t key = 0;                               // names the texels (Scene::shader_textures_key)
 };
+
+// The texels of an interlaced print of `views` strips a lens, strip by strip: texel (x, y) of
+// print at (x / views, (x % views) * print.height + y). The CPU reads the print through it: the
+// pixels of a row of the frame see one strip of neighbouring lenses, side by side here (16 texels
+// apart in print), so its lookups stay in the cache.
+Texture by_strip(const Texture& print, int views);
 
 // One texel a strip: interlace() with one print pixel a strip and rows as in the views.
 InterlaceLayout card_layout(int views);

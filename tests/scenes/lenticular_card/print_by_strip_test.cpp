@@ -1,0 +1,65 @@
+// The CPU reads the card's print strip by strip (textures.h, by_strip): every texel lands where
+// by_strip says, and the card's shading through that copy gives the same bits as through the
+// interlaced print, at every angle, lens, row and scroll.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "scenes/lenticular_card/card.h"
+#include "scenes/lenticular_card/exhibit.h"
+#include "scenes/lenticular_card/textures.h"
+
+namespace sdfreel::lenticular_card {
+namespace {
+
+TEST(PrintByStrip, EveryTexelMovesToItsStrip) {
+  constexpr int VIEWS = 3, LENSES = 5, H = 4;
+  Texture print(LENSES * VIEWS, H, 4);
+  for (size_t i = 0; i < print.texels.size(); ++i) print.texels[i] = float(i);
+  const Texture t = by_strip(print, VIEWS);
+  ASSERT_EQ(t.width, LENSES);
+  ASSERT_EQ(t.height, H * VIEWS);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < LENSES * VIEWS; ++x)
+      for (int c = 0; c < 4; ++c)
+        EXPECT_EQ(t.at(x / VIEWS, (x % VIEWS) * H + y)[c], print.at(x, y)[c]) << x << ", " << y;
+}
+
+TEST(PrintByStrip, CardShadingGivesTheSameBitsAsThroughThePrint) {
+  std::mt19937 rng(11);
+  std::vector<Rgb8Image> a, b;
+  for (int v = 0; v < 7; ++v) {
+    Rgb8Image va(9, 5), vb(9, 5);
+    for (uint8_t& x : va.rgb) x = uint8_t(rng());
+    for (uint8_t& x : vb.rgb) x = uint8_t(rng());
+    a.push_back(va), b.push_back(vb);
+  }
+  const CardPrints prints = make_card_prints(a, b);
+  const CardTextures plain{prints.print.get(), prints.ridges.get()};
+  const CardTextures strips{prints.print.get(), prints.ridges.get(), prints.print_by_strip.get()};
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int fronts = 0;
+  for (double time : {0.0, 3.3, 7.9, 1e6}) {
+    const CardUniforms u = card_uniforms(glm::mat4(1.0f), prints, CardLook{}, time);
+    for (int i = 0; i < 4000; ++i) {
+      // Points over the card's face (and past its sides), seen from in front at any angle.
+      const glm::vec3 at(unit(rng) * CARD_HALF_WIDTH * 1.1f,
+                         CARD_CENTRE_Y + unit(rng) * CARD_HALF_HEIGHT, CARD_HALF_THICKNESS);
+      const glm::vec3 from =
+          at + glm::normalize(glm::vec3(unit(rng), unit(rng) * 0.5f, 0.05f + std::abs(unit(rng))));
+      const Ray ray{from, glm::normalize(at - from), 1e-3f};
+      glm::vec3 c0(0.0f), c1(0.0f);
+      float t0 = 0.0f, t1 = 0.0f;
+      const bool hit = shadeCard(ray, u, plain, c0, t0);
+      ASSERT_EQ(hit, shadeCard(ray, u, strips, c1, t1));
+      fronts += hit;
+      EXPECT_EQ(0, std::memcmp(&c0, &c1, sizeof c0)) << "ray " << i << " at time " << time;
+      EXPECT_EQ(0, std::memcmp(&t0, &t1, sizeof t0));
+    }
+  }
+  EXPECT_GT(fronts, 12000);
+}
+
+}  // namespace
+}  // namespace sdfreel::lenticular_card
