@@ -16,17 +16,6 @@ bool top_left(const glm::dvec2& a, const glm::dvec2& b) {
   return (e.y == 0.0 && e.x < 0.0) || e.y < 0.0;
 }
 
-// Perspective-correct weights of a span's pixels: q_k = l_k / w_k, w_k = q_k / (q_0 + q_1 + q_2).
-struct SpanWeights {
-  D4 w[3];
-};
-
-SpanWeights perspective_weights(const D4 l[3], const double inv_w[3]) {
-  const D4 q0 = l[0] * inv_w[0], q1 = l[1] * inv_w[1], q2 = l[2] * inv_w[2];
-  const D4 qs = q0 + q1 + q2;
-  return {{q0 / qs, q1 / qs, q2 / qs}};
-}
-
 }  // namespace
 
 void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& pass, const Tile& t,
@@ -49,18 +38,24 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
   const bool late = bool(pass.shade_depth);
   const glm::vec4 instance_data = pass.instances[s.instance].data;
   const unsigned i0 = s.v[0], i1 = s.v[1], i2 = s.v[2];
+  const D4 inv_w = {wv[0]->inv_w, wv[1]->inv_w, wv[2]->inv_w, 0.0};
   const double depth[3] = {wv[0]->depth, wv[1]->depth, wv[2]->depth};
-  const double inv_w[3] = {wv[0]->inv_w, wv[1]->inv_w, wv[2]->inv_w};
-  const bool varyings = late || pass.shade;
-  // One covered pixel j of a span: the weights' lanes hold exactly the scalar operations' results
-  // (IEEE division, sums in the same order), so every bit is the per-pixel stage's.
-  auto fragment = [&](int x, int y, float z, const SpanWeights& sw, int j) {
+  // One covered pixel with its edge values (lanes 0-2; lane 3 is unused): the barycentric weights
+  // l_k = b_k / area, q_k = l_k / w_k and w_k = q_k / (q_0 + q_1 + q_2), each lane exactly the
+  // scalar operation (IEEE division), so the same bits with one division instruction for three.
+  auto fragment = [&](int x, int y, const D4& bv) {
+    const D4 l = bv / area;
+    float z = float(l[0] * depth[0] + l[1] * depth[1] + l[2] * depth[2]);
+    if (z < 0.0f || z > 1.0f) return;  // outside the near/far range, as GL clips
     if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) return;
     if (!late && !pass.shade) {  // depth only, nothing to discard
       if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
       return;
     }
-    const float w0 = float(sw.w[0][j]), w1 = float(sw.w[1][j]), w2 = float(sw.w[2][j]);
+    // Perspective-correct varyings.
+    const D4 q = l * inv_w;
+    const D4 wd = q / (q[0] + q[1] + q[2]);
+    const float w0 = float(wd[0]), w1 = float(wd[1]), w2 = float(wd[2]);
     MeshFragment frag;
     frag.world_position = d.world[i0] * w0 + d.world[i1] * w1 + d.world[i2] * w2;
     frag.world_normal = d.normal[i0] * w0 + d.normal[i1] * w1 + d.normal[i2] * w2;
@@ -89,19 +84,9 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     const int y = height - 1 - wy;
     for (int wx = x_lo; wx <= x_hi; wx += SPAN) {
       EdgeSpan span;
-      unsigned bits = edges.cover(wx, x_hi, span);
-      if (bits == 0) continue;
-      // Window depth from the barycentric weights l_k = b_k / area, for the span's pixels at once.
-      D4 l[3];
-      for (int k = 0; k < 3; ++k) l[k] = span.b[k] / area;
-      const D4 zw = l[0] * depth[0] + l[1] * depth[1] + l[2] * depth[2];
-      SpanWeights sw;
-      if (varyings) sw = perspective_weights(l, inv_w);
-      for (; bits != 0; bits &= bits - 1) {
+      for (unsigned bits = edges.cover(wx, x_hi, span); bits != 0; bits &= bits - 1) {
         const int j = __builtin_ctz(bits);
-        const float z = float(zw[j]);
-        if (z < 0.0f || z > 1.0f) continue;  // outside the near/far range, as GL clips
-        fragment(wx + j, y, z, sw, j);
+        fragment(wx + j, y, D4{span.b[0][j], span.b[1][j], span.b[2][j], 0.0});
       }
     }
   }
