@@ -33,10 +33,13 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     const glm::dvec2& a = wv[(k + 1) % 3]->p;
     const glm::dvec2& c = wv[(k + 2) % 3]->p;
     edges.ax[k] = a.x, edges.ay[k] = a.y, edges.ex[k] = c.x - a.x, edges.ey[k] = c.y - a.y;
-    edges.tl[k] = top_left(a, c);
+    edges.tl[k] = top_left(a, c) ? -1 : 0;
   }
   const bool late = bool(pass.shade_depth);
-  const glm::vec4 instance_data = pass.instances[s.instance].data;
+  MeshFragment frag;  // the triangle's constants; each fragment fills in its varyings
+  frag.instance_data = pass.instances[s.instance].data;
+  frag.front_facing = s.front;
+  frag.inputs = out.inputs;
   const unsigned i0 = s.v[0], i1 = s.v[1], i2 = s.v[2];
   const D4 inv_w = {wv[0]->inv_w, wv[1]->inv_w, wv[2]->inv_w, 0.0};
   const double depth[3] = {wv[0]->depth, wv[1]->depth, wv[2]->depth};
@@ -56,13 +59,9 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     const D4 q = l * inv_w;
     const D4 wd = q / (q[0] + q[1] + q[2]);
     const float w0 = float(wd[0]), w1 = float(wd[1]), w2 = float(wd[2]);
-    MeshFragment frag;
     frag.world_position = d.world[i0] * w0 + d.world[i1] * w1 + d.world[i2] * w2;
     frag.world_normal = d.normal[i0] * w0 + d.normal[i1] * w1 + d.normal[i2] * w2;
     frag.uv = d.uv[i0] * w0 + d.uv[i1] * w1 + d.uv[i2] * w2;
-    frag.instance_data = instance_data;
-    frag.front_facing = s.front;
-    frag.inputs = out.inputs;
     glm::vec4 c;
     if (late) {
       if (!pass.shade_depth(frag, c, z)) return;
