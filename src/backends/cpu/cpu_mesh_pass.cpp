@@ -9,9 +9,6 @@ namespace sdfreel {
 
 namespace {
 
-// How many triangles ahead of the rasteriser their vertices are prefetched.
-constexpr size_t PREFETCH_TRIANGLES = 4;
-
 // Clip space of the pass: its own view, or the plan's camera moved by the sample offset.
 glm::mat4 view_projection(const MeshPass& pass, const CpuPassContext& pc) {
   if (pass.view) return pass.view->projection * pass.view->view;
@@ -58,18 +55,8 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
   for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {
     for (const TriangleBatch& b : d.batches) {  // in mesh order
       const VertexArrays clipped = b.clipped();
-      const std::vector<unsigned>& bin = b.bins[size_t(t.index)];
-      for (size_t i = 0; i < bin.size(); ++i) {
-        // At about a pixel per triangle the rasteriser waits on memory: ask for the window
-        // vertices of a triangle a few ahead (and for that triangle itself further ahead).
-        if (i + PREFETCH_TRIANGLES * 2 < bin.size())
-          __builtin_prefetch(&b.triangles[bin[i + PREFETCH_TRIANGLES * 2]]);
-        if (i + PREFETCH_TRIANGLES < bin.size()) {
-          const RasterTriangle& ahead = b.triangles[bin[i + PREFETCH_TRIANGLES]];
-          const WindowVertex* w = ahead.clipped ? clipped.window : placed.window;
-          for (int k = 0; k < 3; ++k) __builtin_prefetch(&w[ahead.v[k]]);
-        }
-        const RasterTriangle& s = b.triangles[bin[i]];
+      for (unsigned i : b.bins[size_t(t.index)]) {
+        const RasterTriangle& s = b.triangles[i];
         rasterise(s, s.clipped ? clipped : placed, pass, t, size.y, out);
       }
     }
