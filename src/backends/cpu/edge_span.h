@@ -20,7 +20,7 @@ struct EdgeSpan {
 // exactly on the edge is inside (the top-left rule).
 struct EdgeRow {
   double ax[3], ay[3], ex[3], ey[3];
-  bool tl[3];
+  int64_t tl[3];  // -1: true, 0: false (a lane mask)
   double row[3];  // ex * (centre_y - ay) of the current row
 
   void start_row(int wy) {
@@ -36,11 +36,15 @@ struct EdgeRow {
     for (int k = 0; k < 3; ++k) {
       const D4 b = row[k] - ey[k] * (centre_x - ax[k]);
       span.b[k] = b;
-      inside &= (b > 0.0) | ((b == 0.0) & (tl[k] ? M4{-1, -1, -1, -1} : M4{0, 0, 0, 0}));
+      inside &= (b > 0.0) | ((b == 0.0) & tl[k]);
     }
+#ifdef __AVX__
+    return unsigned(__builtin_ia32_movmskpd256(D4(inside)));  // the lanes' sign bits
+#else
     unsigned bits = 0;
     for (int j = 0; j < SPAN; ++j) bits |= inside[j] ? 1u << j : 0u;
     return bits;
+#endif
   }
 };
 

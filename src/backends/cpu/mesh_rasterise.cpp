@@ -33,32 +33,35 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     const glm::dvec2& a = wv[(k + 1) % 3]->p;
     const glm::dvec2& c = wv[(k + 2) % 3]->p;
     edges.ax[k] = a.x, edges.ay[k] = a.y, edges.ex[k] = c.x - a.x, edges.ey[k] = c.y - a.y;
-    edges.tl[k] = top_left(a, c);
+    edges.tl[k] = top_left(a, c) ? -1 : 0;
   }
   const bool late = bool(pass.shade_depth);
-  const glm::vec4 instance_data = pass.instances[s.instance].data;
+  MeshFragment frag;  // the triangle's constants; each fragment fills in its varyings
+  frag.instance_data = pass.instances[s.instance].data;
+  frag.front_facing = s.front;
+  frag.inputs = out.inputs;
   const unsigned i0 = s.v[0], i1 = s.v[1], i2 = s.v[2];
-  auto fragment = [&](int wx, int wy, const double b[3]) {
-    const double l0 = b[0] / area, l1 = b[1] / area, l2 = b[2] / area;
-    float z = float(l0 * wv[0]->depth + l1 * wv[1]->depth + l2 * wv[2]->depth);
+  const D4 inv_w = {wv[0]->inv_w, wv[1]->inv_w, wv[2]->inv_w, 0.0};
+  const double depth[3] = {wv[0]->depth, wv[1]->depth, wv[2]->depth};
+  // One covered pixel with its edge values (lanes 0-2; lane 3 is unused): the barycentric weights
+  // l_k = b_k / area, q_k = l_k / w_k and w_k = q_k / (q_0 + q_1 + q_2), each lane exactly the
+  // scalar operation (IEEE division), so the same bits with one division instruction for three.
+  auto fragment = [&](int x, int y, const D4& bv) {
+    const D4 l = bv / area;
+    float z = float(l[0] * depth[0] + l[1] * depth[1] + l[2] * depth[2]);
     if (z < 0.0f || z > 1.0f) return;  // outside the near/far range, as GL clips
-    const int x = wx, y = height - 1 - wy;
     if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) return;
     if (!late && !pass.shade) {  // depth only, nothing to discard
       if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
       return;
     }
     // Perspective-correct varyings.
-    const double q0 = l0 * wv[0]->inv_w, q1 = l1 * wv[1]->inv_w, q2 = l2 * wv[2]->inv_w;
-    const double qs = q0 + q1 + q2;
-    const float w0 = float(q0 / qs), w1 = float(q1 / qs), w2 = float(q2 / qs);
-    MeshFragment frag;
+    const D4 q = l * inv_w;
+    const D4 wd = q / (q[0] + q[1] + q[2]);
+    const float w0 = float(wd[0]), w1 = float(wd[1]), w2 = float(wd[2]);
     frag.world_position = d.world[i0] * w0 + d.world[i1] * w1 + d.world[i2] * w2;
     frag.world_normal = d.normal[i0] * w0 + d.normal[i1] * w1 + d.normal[i2] * w2;
     frag.uv = d.uv[i0] * w0 + d.uv[i1] * w1 + d.uv[i2] * w2;
-    frag.instance_data = instance_data;
-    frag.front_facing = s.front;
-    frag.inputs = out.inputs;
     glm::vec4 c;
     if (late) {
       if (!pass.shade_depth(frag, c, z)) return;
@@ -77,12 +80,12 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
   };
   for (int wy = y_lo; wy <= y_hi; ++wy) {
     edges.start_row(wy);
+    const int y = height - 1 - wy;
     for (int wx = x_lo; wx <= x_hi; wx += SPAN) {
       EdgeSpan span;
       for (unsigned bits = edges.cover(wx, x_hi, span); bits != 0; bits &= bits - 1) {
         const int j = __builtin_ctz(bits);
-        const double b[3] = {span.b[0][j], span.b[1][j], span.b[2][j]};
-        fragment(wx + j, wy, b);
+        fragment(wx + j, y, D4{span.b[0][j], span.b[1][j], span.b[2][j], 0.0});
       }
     }
   }
