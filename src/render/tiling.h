@@ -1,6 +1,7 @@
 #pragma once
 // Runs a function over the image in square tiles on `threads` threads (0 = all cores). Each pixel
 // is written by exactly one call, so results never depend on the thread count or tile order.
+#include <cstddef>
 #include <functional>
 
 namespace sdfreel {
@@ -9,6 +10,10 @@ struct Tile {
   int x0, y0, x1, y1;  // half-open pixel rectangle
   int index;           // row-major tile number
 };
+
+// Runs fn(i) for every i in [0, n) on `threads` threads (0 = all cores), one index a task (the
+// work items differ a lot in cost); in order on the calling thread when threads is 1 or n < 2.
+void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn);
 
 int tile_count(int width, int height, int tile_size);
 void for_each_tile(int width, int height, int tile_size, int threads,

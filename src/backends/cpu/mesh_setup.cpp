@@ -1,12 +1,10 @@
 #include "backends/cpu/mesh_setup.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "backends/cpu/edge_span.h"
+#include "render/tiling.h"
 
 namespace sdfreel {
 
@@ -166,17 +164,6 @@ void setup_batch(const MeshPass& pass, const glm::mat4& view_proj, const glm::iv
   bin_by_tile(size, tile_size, b);
 }
 
-// Runs fn(i) for i in [0, n) on `threads` threads (0: all cores).
-template <class F>
-void parallel_indices(size_t n, int threads, F&& fn) {
-  if (threads == 1 || n < 2) {
-    for (size_t i = 0; i < n; ++i) fn(i);
-    return;
-  }
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] { tbb::parallel_for(size_t(0), n, [&](size_t i) { fn(i); }); });
-}
-
 }  // namespace
 
 bool centre_range(double lo, double hi, int n, int& first, int& last) {
@@ -196,7 +183,7 @@ void place_vertices(const MeshPass& pass, int threads, MeshPassCache::Data& d) {
   d.normal.resize(placed);
   d.uv.resize(placed);
   // Each instance's vertices on their own (`place` is a pure function): in parallel.
-  parallel_indices(pass.instances.size(), threads, [&](size_t n) {
+  for_each_index(pass.instances.size(), threads, [&](size_t n) {
     const MeshInstance& inst = pass.instances[n];
     const glm::mat3 normal_matrix(inst.model);
     for (size_t i = 0, o = n * nv; i < nv; ++i, ++o) {
@@ -230,9 +217,8 @@ void setup_batches(const MeshPass& pass, const glm::mat4& view_proj, const glm::
     d.batches[i].first_instance = instances * i / n;
     d.batches[i].end_instance = instances * (i + 1) / n;
   }
-  parallel_indices(n, threads, [&](size_t i) {
-    setup_batch(pass, view_proj, size, tile_size, d, d.batches[i]);
-  });
+  for_each_index(n, threads,
+                 [&](size_t i) { setup_batch(pass, view_proj, size, tile_size, d, d.batches[i]); });
 }
 
 }  // namespace sdfreel
