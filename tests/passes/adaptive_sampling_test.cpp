@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "backends/cpu/plan_runner.h"
 #include "passes/plan_fixture.h"
@@ -26,13 +27,11 @@ glm::vec3 hashed(const glm::vec3& d) {
   return glm::vec3(float((h >> 16) & 1u));
 }
 
-// A ray pass whose colour is hashed(dir), or a constant.
-RayPass test_pass(bool flat) {
+// A ray pass whose colour is colour(dir), on both the packet and the scalar path.
+template <class Colour>
+RayPass colour_pass(const std::string& name, Colour colour) {
   RayPass p;
-  p.name = flat ? "flat" : "hashed";
-  auto colour = [flat](const glm::vec3& d) {
-    return flat ? glm::vec3(0.3f, 0.5f, 2.0f) : hashed(d);
-  };
+  p.name = name;
   p.packet = [colour](const RayPacket& r, RayPassOutput& out, RayStats&) {
     for (int i = 0; i < r.count; ++i) {
       out.colour[i] = colour(r.dir.lane(i));
@@ -44,6 +43,13 @@ RayPass test_pass(bool flat) {
     keep = true;
   };
   return p;
+}
+
+// A ray pass whose colour is hashed(dir), or a constant.
+RayPass test_pass(bool flat) {
+  return colour_pass(flat ? "flat" : "hashed", [flat](const glm::vec3& d) {
+    return flat ? glm::vec3(0.3f, 0.5f, 2.0f) : hashed(d);
+  });
 }
 
 FramePlan plan_of(const RayPass& pass) {
@@ -114,20 +120,9 @@ TEST(AdaptiveSampling, SubPixelStarRunsToTheMaximum) {
   const glm::vec3 star = primary_ray_dir(ctx.camera, float(sx) + o.x, float(sy) + o.y, w, h);
   const float radius = glm::length(
       primary_ray_dir(ctx.camera, float(sx) + o.x + 0.05f, float(sy) + o.y, w, h) - star);
-  RayPass pass = test_pass(true);
-  auto colour = [star, radius](const glm::vec3& d) {
+  const RayPass pass = colour_pass("star", [star, radius](const glm::vec3& d) {
     return glm::length(d - star) < radius ? glm::vec3(100.0f) : glm::vec3(0.1f);
-  };
-  pass.packet = [colour](const RayPacket& r, RayPassOutput& out, RayStats&) {
-    for (int i = 0; i < r.count; ++i) {
-      out.colour[i] = colour(r.dir.lane(i));
-      out.keep[i] = true;
-    }
-  };
-  pass.scalar = [colour](const Ray& r, glm::vec3& c, float&, bool& keep, RayStats&) {
-    c = colour(r.dir);
-    keep = true;
-  };
+  });
   const FramePlan plan = plan_of(pass);
   const Rendered r = run(plan, ctx, {2, 16, true});
   for (int y = 0; y < h; ++y)
