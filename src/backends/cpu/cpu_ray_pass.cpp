@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "render/camera_lanes.h"
+#include "backends/cpu/trace_packet.h"
 #include "render/tiling.h"
 
 namespace sdfreel {
@@ -49,25 +49,18 @@ void tile_scalar(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
 // The tile's pixels in row order, eight at a time (the last packet padded with its last ray).
 void tile_packets(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
                   const RayPassTargets& out, RayStats& stats) {
-  const FrameContext& f = pc.frame;
   const int tw = t.x1 - t.x0, n = tw * (t.y1 - t.y0);
-  RayPacket packet;
-  packet.origin = f.camera.origin;
-  packet.pixel_angle = pc.pixel_angle;
   RayPassOutput result;
   for (int base = 0; base < n; base += LANES) {
-    packet.count = n - base < LANES ? n - base : LANES;
+    const int count = n - base < LANES ? n - base : LANES;
     F8 x, y;
     for (int i = 0; i < LANES; ++i) {
-      const int k = base + (i < packet.count ? i : packet.count - 1);
+      const int k = base + (i < count ? i : count - 1);
       x[i] = float(t.x0 + k % tw) + pc.offset.x;
       y[i] = float(t.y0 + k / tw) + pc.offset.y;
-      result.keep[i] = false;
-      result.depth[i] = 1.0f;
     }
-    packet.dir = primary_ray_dirs(f.camera, x, y, f.width, f.height);
-    pass.packet(packet, result, stats);
-    for (int i = 0; i < packet.count; ++i) {
+    trace_packet(pass, pc, x, y, count, result, stats);
+    for (int i = 0; i < count; ++i) {
       const int k = base + i;
       store(out, t.x0 + k % tw, t.y0 + k / tw, result.colour[i], result.depth[i], result.keep[i]);
     }

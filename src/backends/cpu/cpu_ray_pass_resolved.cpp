@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "backends/cpu/trace_packet.h"
 #include "render/tiling.h"
 
 namespace sdfreel {
@@ -34,22 +35,18 @@ void trace_pairs(const RayPass& pass, const CpuPassContext& pc,
                  const std::vector<SamplePair>& pairs, int from, int to, const glm::vec3& clear,
                  Sums& sums, RayStats& stats) {
   const FrameContext& f = pc.frame;
-  RayPacket packet;
-  packet.origin = f.camera.origin;
-  packet.pixel_angle = pc.pixel_angle;
   RayPassOutput result;
   for (int base = from; base < to; base += LANES) {
-    packet.count = to - base < LANES ? to - base : LANES;
+    const int count = to - base < LANES ? to - base : LANES;
+    F8 x, y;
     for (int i = 0; i < LANES; ++i) {
-      const SamplePair& p = pairs[size_t(base + (i < packet.count ? i : packet.count - 1))];
+      const SamplePair& p = pairs[size_t(base + (i < count ? i : count - 1))];
       const glm::vec2& o = f.sample_offsets[size_t(p.sample)];
-      const float x = float(p.pixel % f.width) + o.x, y = float(p.pixel / f.width) + o.y;
-      packet.dir.set_lane(i, primary_ray_dir(f.camera, x, y, f.width, f.height));
-      result.keep[i] = false;
-      result.depth[i] = 1.0f;
+      x[i] = float(p.pixel % f.width) + o.x;
+      y[i] = float(p.pixel / f.width) + o.y;
     }
-    pass.packet(packet, result, stats);
-    for (int i = 0; i < packet.count; ++i) {
+    trace_packet(pass, pc, x, y, count, result, stats);
+    for (int i = 0; i < count; ++i) {
       const SamplePair& p = pairs[size_t(base + i)];
       const glm::vec3 c = result.keep[i] ? result.colour[i] : clear;
       float* s = &sums.all.pixels[size_t(p.pixel) * 4];
@@ -92,9 +89,8 @@ void run_round(const RayPass& pass, const CpuPassContext& pc, const std::vector<
   const int chunks = int(chunk_starts.size());
   chunk_starts.push_back(int(pairs.size()));
   std::vector<RayStats> chunk_stats(static_cast<size_t>(chunks));
-  for_each_tile(chunks, 1, 1, pc.threads, [&](const Tile& t) {
-    trace_pairs(pass, pc, pairs, chunk_starts[size_t(t.x0)], chunk_starts[size_t(t.x0) + 1], clear,
-                sums, chunk_stats[size_t(t.x0)]);
+  for_each_index(size_t(chunks), pc.threads, [&](size_t c) {
+    trace_pairs(pass, pc, pairs, chunk_starts[c], chunk_starts[c + 1], clear, sums, chunk_stats[c]);
   });
   for (const RayStats& s : chunk_stats) stats.add(s);
 }
