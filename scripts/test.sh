@@ -3,7 +3,7 @@
 # fuzzing run of each libFuzzer target and the cheap subset of the build matrix: what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --test
 # The Slurm test's daemons (munge, slurmctld, slurmd); the test starts and stops its own cluster.
 scripts/slurm-local.sh install
 scripts/build.sh

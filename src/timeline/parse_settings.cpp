@@ -1,4 +1,5 @@
 // [video], [output] and [color]: the timeline's fixed settings.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
