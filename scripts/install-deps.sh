@@ -19,7 +19,7 @@ packages=(
   # The GL backend: headers only at build time (libEGL and libOSMesa are opened at run time).
   libgl-dev libegl-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri   # EGL with Mesa's software device (llvmpipe)
-  '?libosmesa6-dev'   # the OSMesa platform; Mesa 25.1 removed it, so it is skipped where it is gone
+  '?libosmesa6'       # the OSMesa platform (dlopened); Mesa 25.1 removed it, so it is skipped where it is gone
 )
 test_packages=(
   git libgtest-dev

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the committed golden hashes (tests/golden/<scene>/<name>.framemd5) from the current
-# build. GOLDEN_BACKENDS="osmesa" also renders on those backends and writes
-# <name>.<backend>.framemd5 where a backend differs from the CPU's hashes (and removes it where it
+# build. GOLDEN_BACKENDS="gl" also renders on the GL backend and writes
+# <name>.gl.framemd5 where a backend differs from the CPU's hashes (and removes it where it
 # agrees: the golden test then holds that backend to the CPU's file).
 # Look at the frames it leaves in build/golden/<scene>/<name>/out-<backend>/frames/ before
 # committing the result.

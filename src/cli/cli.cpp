@@ -20,6 +20,7 @@ int run_cli(int argc, char** argv) {
   add_bench_command(app, status);
   add_slurm_command(app, status);
   add_interlace_command(app, status);
+  add_devices_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

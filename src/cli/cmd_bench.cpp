@@ -250,11 +250,19 @@ void print_preset_check(const std::vector<BenchRow>& rows) {
                 f->psnr_db >= FINAL_MIN_PSNR_DB ? "ok  " : "MISS", speedup,
                 speedup >= DRAFT_MIN_SPEEDUP ? "ok" : "MISS");
   }
-  // CPU against llvmpipe, when both ran (README "CPU against llvmpipe").
-  const std::vector<bench::BackendComparison> cmp = bench::compare_backends(rows);
-  if (!cmp.empty())
-    std::printf("\nCPU against OSMesa (llvmpipe), same presets, same run:\n%s",
-                bench::format_backend_table(cmp).c_str());
+  // CPU against llvmpipe, when both ran (README "CPU against llvmpipe"), and the GL platforms
+  // against each other.
+  for (const char* gl : {"gl", "egl", "osmesa"}) {
+    const std::vector<bench::BackendComparison> cmp = bench::compare_backends(rows, "cpu", gl);
+    if (!cmp.empty())
+      std::printf("\nCPU against %s (llvmpipe), same presets, same run:\n%s", gl,
+                  bench::format_backend_table(cmp, true).c_str());
+  }
+  const std::vector<bench::BackendComparison> platforms =
+      bench::compare_backends(rows, "egl", "osmesa");
+  if (!platforms.empty())
+    std::printf("\nEGL against OSMesa (both llvmpipe), same presets, same run:\n%s",
+                bench::format_backend_table(platforms, false).c_str());
 }
 
 // --micro: the frame at video time 4 s of each target (frame 120 at 30 fps; the last frame of a
@@ -425,7 +433,7 @@ void add_bench_command(CLI::App& app, int& status) {
   cmd->add_option("--resolution", o->resolution, "WxH of the bench frames")->capture_default_str();
   cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-2 or 0,30,60")
       ->capture_default_str();
-  cmd->add_option("--backends", o->backends, "comma-separated: cpu,osmesa")->capture_default_str();
+  cmd->add_option("--backends", o->backends, "comma-separated: cpu,gl,egl,osmesa")->capture_default_str();
   cmd->add_option("--out", o->out, "folder for bench.csv, the plots and the reference cache")
       ->capture_default_str();
   cmd->add_option("--repetitions", o->repetitions,

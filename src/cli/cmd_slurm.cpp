@@ -104,7 +104,8 @@ void add_slurm_command(CLI::App& app, int& status) {
   cmd->add_option("--sbatch-arg", o->sbatch_args,
                   "extra sbatch option for both jobs, e.g. --sbatch-arg=--account=vfx (repeatable)")
       ->allow_extra_args(false);
-  cmd->add_option("--backend", o->backend, "cpu | osmesa")->check(CLI::IsMember({"cpu", "osmesa"}));
+  cmd->add_option("--backend", o->backend, "cpu | gl | egl | osmesa (GL device: SDFREEL_GL_DEVICE)")
+      ->check(CLI::IsMember(backend_names()));
   cmd->add_option("--resolution", o->resolution, "WxH, overrides the timeline");
   cmd->add_option("--samples", o->samples, "samples per pixel, 1..1024")
       ->check(CLI::Range(1, 1024));

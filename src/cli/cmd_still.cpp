@@ -31,7 +31,7 @@ int run_still(const StillOptions& o) {
   RenderOptions ro = o.render;
   ro.no_video = true;  // a still has no video, so h264's even-size rule does not apply
   Timeline tl = load_with_overrides(ro);
-  FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads));
+  FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads, o.render.gl));
   const int frame = int(std::llround(o.time * tl.fps.value()));
   RenderedFrame f = pipe.render_context(frame_context_at(tl, pipe.scene(), frame, o.time));
   if (ext == ".exr")
@@ -65,8 +65,7 @@ void add_still_command(CLI::App& app, int& status) {
   cmd->add_option("--time", o->time, "video time in seconds")->required();
   cmd->add_option("-o,--output", o->output, "output file, .exr (linear) or .png (display)")
       ->required();
-  cmd->add_option("--backend", o->render.backend, "cpu | osmesa")
-      ->check(CLI::IsMember({"cpu", "osmesa"}));
+  add_backend_options(cmd, o->render);
   cmd->add_option("--threads", o->render.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--resolution", o->render.resolution, "WxH, overrides the timeline");

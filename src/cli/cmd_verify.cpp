@@ -1,5 +1,6 @@
 // `sdfreel verify TIMELINE --manifest FILE`: re-render and compare every frame's hashes.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -7,6 +8,8 @@
 #include "cli/output_folder.h"
 #include "io/frame_files.h"
 #include "io/hash_reference.h"
+#include "io/manifest_differences.h"
+#include "cli/verify_tolerance.h"
 
 namespace sdfreel {
 
@@ -15,7 +18,13 @@ namespace {
 struct VerifyOptions {
   RenderOptions render;
   std::string manifest;
+  std::string tolerance;  // "" (bit for bit) or "filament"
 };
+
+// With a tolerance the renderer may differ (that is its purpose): only the settings must agree.
+bool renderer_line(const std::string& line) {
+  return line.rfind("backend:", 0) == 0 || line.rfind("versions.", 0) == 0;
+}
 
 // |a - b| per channel, scaled x16 so one-code differences are visible; black where equal.
 ImageRGB16 diff_image(const ImageRGB16& a, const ImageRGB16& b) {
@@ -50,18 +59,25 @@ int run_verify(const VerifyOptions& o) {
     throw UsageError(e.what());
   }
   Timeline tl = load_with_overrides(o.render);
-  FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads));
+  FramePipeline pipe(tl, make_backend(o.render.backend, o.render.threads, o.render.gl));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
   if (ref.header && !header.same_render_as(*ref.header)) {
-    std::fprintf(stderr,
-                 "sdfreel: verify failed: %s was made with other settings (timeline, backend, "
-                 "library versions, resolution, samples, quality or colour)\n",
-                 o.manifest.c_str());
-    return 1;
+    std::vector<std::string> lines = header_differences(header, *ref.header);
+    if (!o.tolerance.empty())
+      lines.erase(std::remove_if(lines.begin(), lines.end(), renderer_line), lines.end());
+    if (!lines.empty()) {
+      std::fprintf(stderr, "sdfreel: verify failed: %s was made with other settings:\n",
+                   o.manifest.c_str());
+      for (const std::string& line : lines) std::fprintf(stderr, "  %s\n", line.c_str());
+      return 1;
+    }
   }
   if (!same_frame_size(ref, tl, o.manifest)) return 1;
   const std::string dir = std::filesystem::path(o.manifest).parent_path().string();
   const std::string out_dir = o.render.out.empty() ? (dir.empty() ? "." : dir) : o.render.out;
+  if (!o.tolerance.empty())
+    return verify_within_tolerance(pipe, selected_frames(tl, o.render), dir.empty() ? "." : dir,
+                                   out_dir);
   int checked = 0;
   for (int i : selected_frames(tl, o.render)) {
     auto it = ref.frames.find(i);
@@ -113,6 +129,10 @@ void add_verify_command(CLI::App& app, int& status) {
          "--manifest", o->manifest,
          "manifest.json or framemd5 (sdfreel's or ffmpeg -f framemd5) of an earlier render")
       ->required();
+  cmd->add_option("--tolerance", o->tolerance,
+                  "filament: hold frames to the golden PNGs beside the manifest by Filament's "
+                  "rule (for another renderer, e.g. a GPU) instead of by hash")
+      ->check(CLI::IsMember({"filament"}));
   cmd->callback([o, &status] { status = run_verify(*o); });
 }
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
-#ifdef SDFREEL_HAVE_OSMESA
-#include "backends/osmesa/osmesa_backend.h"
+#ifdef SDFREEL_HAVE_GL
+#include "backends/gl/gl_backend.h"
 #endif
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
@@ -36,7 +36,7 @@ struct OcioChecker : ColorChecker {
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("TIMELINE", o.timeline_path, "timeline file (TOML)")->required();
-  cmd->add_option("--backend", o.backend, "cpu | osmesa")->check(CLI::IsMember({"cpu", "osmesa"}));
+  add_backend_options(cmd, o);
   cmd->add_option("--frames", o.frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
   cmd->add_option("--shard", o.shard,
                   "I/N: the I-th (0-based) of N contiguous parts of the frames");
@@ -84,23 +84,37 @@ std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
   return frames;
 }
 
-std::unique_ptr<Backend> make_backend(const std::string& name, int threads) {
+void add_backend_options(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_option("--backend", o.backend, "cpu | gl (EGL, else OSMesa) | egl | osmesa")
+      ->check(CLI::IsMember(backend_names()));
+  cmd->add_option("--gl-platform", o.gl.platform,
+                  "egl | osmesa | auto, for --backend gl (env SDFREEL_GL_PLATFORM; default auto)")
+      ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
+  cmd->add_option("--gl-device", o.gl.device,
+                  "software | gpu | N from `sdfreel devices` (env SDFREEL_GL_DEVICE; default "
+                  "software, Mesa's llvmpipe)");
+}
+
+std::vector<std::string> backend_names() { return {"cpu", "gl", "egl", "osmesa"}; }
+
+std::unique_ptr<Backend> make_backend(const std::string& name, int threads, GlChoice gl) {
   if (name == "cpu") return std::make_unique<CpuBackend>(threads);
-  if (name == "osmesa") {
-#ifdef SDFREEL_HAVE_OSMESA
+  if (name == "gl" || name == "egl" || name == "osmesa") {
+    if (name != "gl") gl.platform = name;
+#ifdef SDFREEL_HAVE_GL
     // llvmpipe reads its thread count when the first context is created; an explicit
     // LP_NUM_THREADS in the environment wins over --threads.
     if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
     try {
-      return std::make_unique<OsmesaBackend>();
+      return std::make_unique<GlBackend>(gl);
     } catch (const std::exception& e) {
-      throw RenderError(std::string("cannot start the osmesa backend: ") + e.what());
+      throw RenderError("cannot start the " + name + " backend: " + e.what());
     }
 #else
-    throw RenderError("the osmesa backend is not built into this sdfreel (no OSMesa found)");
+    throw RenderError("the GL backend is not built into this sdfreel (no EGL or GL headers)");
 #endif
   }
-  throw UsageError("unknown backend '" + name + "' (cpu | osmesa)");
+  throw UsageError("unknown backend '" + name + "' (cpu | gl | egl | osmesa)");
 }
 
 }  // namespace sdfreel

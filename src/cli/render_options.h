@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/gl/gl_choice.h"
 #include "render/backend.h"
 #include "timeline/timeline.h"
 
@@ -16,6 +17,7 @@ namespace sdfreel {
 struct RenderOptions {
   std::string timeline_path;
   std::string backend = "cpu";
+  GlChoice gl;  // --gl-platform, --gl-device
   std::string frames, shard, resolution, quality, out;
   int threads = 0;
   int samples = 0;
@@ -24,13 +26,17 @@ struct RenderOptions {
 };
 
 void add_render_options(CLI::App* cmd, RenderOptions& o);
+// --backend, --gl-platform, --gl-device.
+void add_backend_options(CLI::App* cmd, RenderOptions& o);
+std::vector<std::string> backend_names();  // cpu gl egl osmesa
 
 // Loads and validates the timeline, then applies the overrides (re-validated). Throws InputError
 // or UsageError: nothing has been written yet.
 Timeline load_with_overrides(const RenderOptions& o);
 // The frames to render: --frames and --shard applied to the timeline's frame range.
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
-// A backend by name; UsageError for unknown names, RenderError when it cannot start.
-std::unique_ptr<Backend> make_backend(const std::string& name, int threads);
+// A backend by name (egl and osmesa: the GL backend on that platform); UsageError for unknown
+// names, RenderError when it cannot start.
+std::unique_ptr<Backend> make_backend(const std::string& name, int threads, GlChoice gl = {});
 
 }  // namespace sdfreel

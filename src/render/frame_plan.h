@@ -1,6 +1,6 @@
 #pragma once
 // A frame as a small plan of passes over named targets, run by both backends (CPU:
-// backends/cpu/plan_runner, GL: backends/osmesa/gl_plan_runner).
+// backends/cpu/plan_runner, GL: backends/gl/gl_plan_runner).
 //
 // Targets are images, frame-sized unless they give a size: colour targets (RGBA float) and depth
 // targets (window depth in channel 0, the convention of camera_model.h, cleared to 1). Every plan

@@ -1,7 +1,7 @@
 // Golden hashes, found by data: every tests/golden/<scene>/<name>.toml must reproduce its committed
-// hashes bit for bit on every backend. The CPU backend is held to <name>.framemd5; the OSMesa
-// backend to <name>.osmesa.framemd5 where the backends differ, else to the CPU's file (the GLSL
-// twin renders the same bits). After an intended change of the picture: scripts/regen-golden.sh,
+// hashes bit for bit on every backend. The CPU backend is held to <name>.framemd5; the GL backend,
+// on both its platforms (EGL and OSMesa drive the same llvmpipe), to <name>.gl.framemd5 where the
+// backends differ, else to the CPU's file (the GLSL twin renders the same bits). After an intended change of the picture: scripts/regen-golden.sh,
 // look at the frames, commit.
 #include <gtest/gtest.h>
 
@@ -47,12 +47,12 @@ TEST_P(GoldenFrames, MatchCommittedHashes) {
   const std::string dir = scratch_dir("golden-" + g.scene + "-" + g.name + "-" + backend);
   fs::copy_file(g.path(".toml"), dir + "/t.toml");
   const RunResult r = run_sdfreel("render t.toml --backend " + backend, dir);
-  // A machine (or build) without OSMesa cannot run the osmesa backend at all: nothing to compare.
-  if (r.status != 0 && (r.err.find("cannot start the osmesa backend") != std::string::npos ||
-                        r.err.find("osmesa backend is not built") != std::string::npos))
+  // A machine (or build) without this GL platform cannot run it at all: nothing to compare.
+  if (r.status != 0 && (r.err.find("cannot start the " + backend + " backend") != std::string::npos ||
+                        r.err.find("GL backend is not built") != std::string::npos))
     GTEST_SKIP() << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string own = g.path("." + backend + ".framemd5");
+  const std::string own = g.path(".gl.framemd5");
   const std::string file = backend != "cpu" && fs::exists(own) ? own : g.path(".framemd5");
   const std::string want = read_file(file);
   ASSERT_FALSE(want.empty()) << "no committed golden file " << file
@@ -69,7 +69,7 @@ std::string golden_name(const ::testing::TestParamInfo<std::tuple<Golden, std::s
 
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenFrames,
                          ::testing::Combine(::testing::ValuesIn(goldens()),
-                                            ::testing::Values("cpu", "osmesa")),
+                                            ::testing::Values("cpu", "egl", "osmesa")),
                          golden_name);
 
 }  // namespace

@@ -52,8 +52,10 @@ echo "package: $(basename "$deb"), Depends: $depends"
 for lib in libpng16 libopenexr libopencolorio libavcodec libtbb; do
   [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib"
 done
-if [[ " ${backends[*]} " == *" osmesa "* ]]; then
-  [[ $depends == *libosmesa6* ]] || fail "the package does not depend on libosmesa6"
+if [[ " ${backends[*]} " == *" gl "* ]]; then
+  for lib in libegl1 libegl-mesa0 libgl1-mesa-dri; do
+    [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib (the GL backend's EGL)"
+  done
 fi
 dpkg -x "$deb" "$tmp/deb"
 
@@ -78,7 +80,7 @@ renders_like_the_build_tree "$tmp/prefix" install
 renders_like_the_build_tree "$tmp/deb/usr" deb
 
 # Without its data the installed binary must fail, whatever the source tree holds: the OCIO config
-# (every backend needs it), then the shaders (osmesa).
+# (every backend needs it), then the shaders (gl).
 fails_without() {  # RELATIVE BACKEND MESSAGE
   local data=$tmp/prefix/share/sdfreel run=$tmp/run-without-${1//\//_}
   mv "$data/$1" "$data/$1.away"
@@ -92,6 +94,6 @@ fails_without() {  # RELATIVE BACKEND MESSAGE
   echo "without share/sdfreel/$1: $2 fails ($(grep -m 1 "$3" "$run.log"))"
 }
 fails_without ocio/config.ocio cpu "cannot find the shipped OCIO config"
-if [[ " ${backends[*]} " == *" osmesa "* ]]; then
-  fails_without shaders osmesa "cannot find the GLSL shader folder"
+if [[ " ${backends[*]} " == *" gl "* ]]; then
+  fails_without shaders gl "cannot find the GLSL shader folder"
 fi

@@ -24,7 +24,7 @@ inline float occlusion_pattern(int x, int y) {
 }
 
 // An image pass writing `value` (uniform occlusion) or the pattern into `target`; GL shader
-// tests/osmesa/shaders/occlusion_fill.glsl.
+// tests/gl/shaders/occlusion_fill.glsl.
 inline ImagePass occlusion_fill(const std::string& target, bool pattern, float value) {
   ImagePass p;
   p.name = "occlusion fill";

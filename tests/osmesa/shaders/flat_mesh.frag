@@ -1,6 +1,0 @@
-// A mesh pass's fragment: the instance's data as its colour (tests/osmesa/plan_runner_test.cpp).
-#include "common/mesh_fragment.glsl"
-
-vec4 shade(MeshFragment f) {
-  return f.instance_data;
-}
