@@ -25,8 +25,7 @@ struct BackendComparison {
 
 // One comparison per scene and named preset that both backends ran, in row order.
 std::vector<BackendComparison> compare_backends(const std::vector<BenchRow>& rows,
-                                                const std::string& base,
-                                                const std::string& other);
+                                                const std::string& base, const std::string& other);
 // Markdown table of the comparisons; with_target adds the CPU target's column.
 std::string format_backend_table(const std::vector<BackendComparison>& cmp, bool with_target);
 

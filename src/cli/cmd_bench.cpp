@@ -433,7 +433,8 @@ void add_bench_command(CLI::App& app, int& status) {
   cmd->add_option("--resolution", o->resolution, "WxH of the bench frames")->capture_default_str();
   cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-2 or 0,30,60")
       ->capture_default_str();
-  cmd->add_option("--backends", o->backends, "comma-separated: cpu,gl,egl,osmesa")->capture_default_str();
+  cmd->add_option("--backends", o->backends, "comma-separated: cpu,gl,egl,osmesa")
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "folder for bench.csv, the plots and the reference cache")
       ->capture_default_str();
   cmd->add_option("--repetitions", o->repetitions,

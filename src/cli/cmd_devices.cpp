@@ -26,7 +26,8 @@ using nlohmann::json;
 json open_context(const std::function<std::unique_ptr<GlPlatform>()>& make) {
   try {
     std::unique_ptr<GlPlatform> p = make();
-    json j = {{"renderer", p->gl().string(GL_RENDERER)}, {"gl_version", p->gl().string(GL_VERSION)}};
+    json j = {{"renderer", p->gl().string(GL_RENDERER)},
+              {"gl_version", p->gl().string(GL_VERSION)}};
     p->release();
     return j;
   } catch (const std::exception& e) {
@@ -39,9 +40,9 @@ json egl_report() {
   try {
     const EglLibrary& egl = egl_library();
     for (const EglDevice& d : egl_devices(egl)) {
-      json j = {{"index", d.index},       {"name", d.name},
-                {"vendor", d.vendor},     {"software", d.software},
-                {"drm_node", d.drm_node}, {"render_node", d.render_node},
+      json j = {{"index", d.index},          {"name", d.name},
+                {"vendor", d.vendor},        {"software", d.software},
+                {"drm_node", d.drm_node},    {"render_node", d.render_node},
                 {"cuda_index", d.cuda_index}};
       j["context"] = open_context([&] {
         return std::make_unique<EglPlatform>(d.software ? "software" : std::to_string(d.index));
@@ -85,7 +86,9 @@ void print_context(const json& c) {
               or_dash(c, "gl_version").c_str());
 }
 
-bool starts(const json& c) { return !c.contains("error"); }
+bool starts(const json& c) {
+  return !c.contains("error");
+}
 
 // Whether any GL platform renders here: the exit status is 0 when one does, else 1.
 bool any_renders(const json& r) {
@@ -107,15 +110,16 @@ void print_report(const json& r) {
     const std::string choose = d["software"] ? "software" : std::to_string(d["index"].get<int>());
     std::printf("EGL device %d: %s (--gl-device %s)\n", d["index"].get<int>(),
                 or_dash(d, "name").c_str(), choose.c_str());
-    std::printf("  vendor:      %s\n  software:    %s\n  DRM node:    %s\n  render node: %s\n"
-                "  CUDA index:  %s\n",
-                or_dash(d, "vendor").c_str(), d["software"] ? "yes" : "no",
-                or_dash(d, "drm_node").c_str(), or_dash(d, "render_node").c_str(),
-                or_dash(d, "cuda_index").c_str());
+    std::printf(
+        "  vendor:      %s\n  software:    %s\n  DRM node:    %s\n  render node: %s\n"
+        "  CUDA index:  %s\n",
+        or_dash(d, "vendor").c_str(), d["software"] ? "yes" : "no", or_dash(d, "drm_node").c_str(),
+        or_dash(d, "render_node").c_str(), or_dash(d, "cuda_index").c_str());
     print_context(d["context"]);
   }
   if (egl.contains("surfaceless")) {
-    std::printf("EGL (no device enumeration): Mesa's surfaceless platform (--gl-device software)\n");
+    std::printf(
+        "EGL (no device enumeration): Mesa's surfaceless platform (--gl-device software)\n");
     print_context(egl["surfaceless"]);
   }
   std::printf("OSMesa (--gl-platform osmesa, software only):\n");

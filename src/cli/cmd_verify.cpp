@@ -6,10 +6,10 @@
 
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
+#include "cli/verify_tolerance.h"
 #include "io/frame_files.h"
 #include "io/hash_reference.h"
 #include "io/manifest_differences.h"
-#include "cli/verify_tolerance.h"
 
 namespace sdfreel {
 

@@ -95,7 +95,9 @@ void add_backend_options(CLI::App* cmd, RenderOptions& o) {
                   "software, Mesa's llvmpipe)");
 }
 
-std::vector<std::string> backend_names() { return {"cpu", "gl", "egl", "osmesa"}; }
+std::vector<std::string> backend_names() {
+  return {"cpu", "gl", "egl", "osmesa"};
+}
 
 std::unique_ptr<Backend> make_backend(const std::string& name, int threads, GlChoice gl) {
   if (name == "cpu") return std::make_unique<CpuBackend>(threads);

@@ -20,8 +20,8 @@ int verify_within_tolerance(FramePipeline& pipe, const std::vector<int>& frames,
     const ImageRGB16 want = read_png16(golden);
     const RenderedFrame f = pipe.render(i);
     if (want.width != f.display.width || want.height != f.display.height) {
-      std::fprintf(stderr, "sdfreel: verify failed: %s is %dx%d, the frame %dx%d\n",
-                   golden.c_str(), want.width, want.height, f.display.width, f.display.height);
+      std::fprintf(stderr, "sdfreel: verify failed: %s is %dx%d, the frame %dx%d\n", golden.c_str(),
+                   want.width, want.height, f.display.width, f.display.height);
       return 1;
     }
     const ToleranceVerdict v = filament_rule(want, f.display);
@@ -43,8 +43,9 @@ int verify_within_tolerance(FramePipeline& pipe, const std::vector<int>& frames,
                  100.0 * v.share_over_5, v.difference.max, v.psnr_db, note.c_str());
   }
   if (checked == 0) {
-    std::fprintf(stderr, "sdfreel: verify failed: no golden PNG frames for the selected frames "
-                         "in %s/frames (render the reference with frames = [\"png\"])\n",
+    std::fprintf(stderr,
+                 "sdfreel: verify failed: no golden PNG frames for the selected frames "
+                 "in %s/frames (render the reference with frames = [\"png\"])\n",
                  golden_dir.c_str());
     return 1;
   }

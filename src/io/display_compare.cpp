@@ -1,10 +1,9 @@
 #include "io/display_compare.h"
 
-#include <limits>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 

@@ -1,8 +1,8 @@
 // Golden hashes, found by data: every tests/golden/<scene>/<name>.toml must reproduce its committed
 // hashes bit for bit on every backend. The CPU backend is held to <name>.framemd5; the GL backend,
 // on both its platforms (EGL and OSMesa drive the same llvmpipe), to <name>.gl.framemd5 where the
-// backends differ, else to the CPU's file (the GLSL twin renders the same bits). After an intended change of the picture: scripts/regen-golden.sh,
-// look at the frames, commit.
+// backends differ, else to the CPU's file (the GLSL twin renders the same bits). After an intended
+// change of the picture: scripts/regen-golden.sh, look at the frames, commit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,8 +48,9 @@ TEST_P(GoldenFrames, MatchCommittedHashes) {
   fs::copy_file(g.path(".toml"), dir + "/t.toml");
   const RunResult r = run_sdfreel("render t.toml --backend " + backend, dir);
   // A machine (or build) without this GL platform cannot run it at all: nothing to compare.
-  if (r.status != 0 && (r.err.find("cannot start the " + backend + " backend") != std::string::npos ||
-                        r.err.find("GL backend is not built") != std::string::npos))
+  if (r.status != 0 &&
+      (r.err.find("cannot start the " + backend + " backend") != std::string::npos ||
+       r.err.find("GL backend is not built") != std::string::npos))
     GTEST_SKIP() << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string own = g.path(".gl.framemd5");

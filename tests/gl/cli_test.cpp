@@ -90,17 +90,16 @@ TEST_F(GlCli, ADeviceThatIsNotThereNamesTheDevicesThatAre) {
   std::string why;
   const bool have_egl = test::try_gl_platform(&why, "egl") != nullptr;
   if (!have_egl) GTEST_SKIP() << why;
-  const test::RunResult r = run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir +
-                                            "/x.png' --backend egl --gl-device 99",
-                                        ".");
+  const test::RunResult r = run_sdfreel(
+      "still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend egl --gl-device 99", ".");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("no EGL device '99'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("software"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/x.png"));
   // The variable chooses as the option does.
-  const test::RunResult env = run_sdfreel(
-      "still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend egl", ".",
-      "SDFREEL_GL_DEVICE=99 ");
+  const test::RunResult env =
+      run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir + "/x.png' --backend egl", ".",
+                  "SDFREEL_GL_DEVICE=99 ");
   EXPECT_EQ(env.status, 1) << env.err;
   EXPECT_NE(env.err.find("no EGL device '99'"), std::string::npos) << env.err;
 }
@@ -139,10 +138,10 @@ TEST_F(GlCli, DevicesListsTheSoftwareDeviceAndItRenders) {
       ASSERT_TRUE(d.at("context").contains("renderer")) << d.dump();
       renderer = d.at("context").at("renderer");
       const std::string index = std::to_string(d.at("index").get<int>());
-      const test::RunResult still = run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir +
-                                                    "/by-index.png' --backend egl --gl-device " +
-                                                    index,
-                                                ".");
+      const test::RunResult still =
+          run_sdfreel("still '" + timeline + "' --time 0 -o '" + dir +
+                          "/by-index.png' --backend egl --gl-device " + index,
+                      ".");
       EXPECT_EQ(still.status, 0) << still.err;
     }
   if (j.at("egl").contains("surfaceless")) renderer = j["egl"]["surfaceless"].value("renderer", "");
@@ -156,10 +155,9 @@ TEST_F(GlCli, DevicesListsTheSoftwareDeviceAndItRenders) {
 
 // Without any GL library nothing renders: devices says why and exits 1.
 TEST_F(GlCli, DevicesWithoutLibrariesSaysWhyAndExitsWithOne) {
-  const test::RunResult r = run_sdfreel(
-      "devices", ".",
-      "SDFREEL_EGL_LIBRARY=/nonexistent/libEGL.so.1 "
-      "SDFREEL_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8 ");
+  const test::RunResult r = run_sdfreel("devices", ".",
+                                        "SDFREEL_EGL_LIBRARY=/nonexistent/libEGL.so.1 "
+                                        "SDFREEL_OSMESA_LIBRARY=/nonexistent/libOSMesa.so.8 ");
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("EGL is not available"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("OSMesa is not available"), std::string::npos) << r.out;

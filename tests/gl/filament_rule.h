@@ -1,7 +1,8 @@
 #pragma once
-// Filament's renderer-test rule (io/display_compare.h) for frames with mesh passes (which need not be bit-identical
-// between backends): at most 0.1% of display pixels off by more than 5/255 and a mean difference
-// below 0.5/255, on display values (clamped, 1/2.2 power, 16 bits); diff images written on failure.
+// Filament's renderer-test rule (io/display_compare.h) for frames with mesh passes (which need not
+// be bit-identical between backends): at most 0.1% of display pixels off by more than 5/255 and a
+// mean difference below 0.5/255, on display values (clamped, 1/2.2 power, 16 bits); diff images
+// written on failure.
 #include <string>
 
 #include "io/display_compare.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Shared set-up of the GL tests: a context on the platform SDFREEL_GL_PLATFORM names (ctest runs
-// the suite once per platform; unset: EGL, else OSMesa), or a skip that says why there is none, and a
-// scratch shader folder holding the test shaders beside links to the real shader folders.
+// the suite once per platform; unset: EGL, else OSMesa), or a skip that says why there is none, and
+// a scratch shader folder holding the test shaders beside links to the real shader folders.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -51,11 +51,11 @@ inline std::unique_ptr<GlPlatform> try_gl_platform(std::string* why,
 }
 
 // Skips the test (from SetUp) when this run's platform cannot start: the binary would fail too.
-#define SDFREEL_SKIP_WITHOUT_GL()                                   \
-  do {                                                              \
-    std::string why_;                                               \
-    if (!::sdfreel::test::try_gl_platform(&why_))                   \
-      GTEST_SKIP() << "GL platform unavailable: " << why_;          \
+#define SDFREEL_SKIP_WITHOUT_GL()                          \
+  do {                                                     \
+    std::string why_;                                      \
+    if (!::sdfreel::test::try_gl_platform(&why_))          \
+      GTEST_SKIP() << "GL platform unavailable: " << why_; \
   } while (0)
 
 // Each test gets a fresh context and driver; without the platform the test is skipped with the

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "gl/gl_fixture.h"
-#include "io/frame_files.h"
 #include "io/display_compare.h"
+#include "io/frame_files.h"
 #include "scenes/registry.h"
 #include "support/run.h"
 #include "support/scratch.h"

@@ -10,15 +10,15 @@
 namespace sdfreel {
 
 struct EglDevice {
-  int index = 0;             // position in eglQueryDevicesEXT's list
+  int index = 0;  // position in eglQueryDevicesEXT's list
   EGLDeviceEXT handle = nullptr;
-  std::string name;          // EGL_RENDERER_EXT where offered, else the DRM node or "software"
-  std::string vendor;        // EGL_VENDOR of the device where offered
-  bool software = false;     // EGL_MESA_device_software
-  std::string drm_node;      // EGL_DRM_DEVICE_FILE_EXT, e.g. /dev/dri/card0
-  std::string render_node;   // EGL_DRM_RENDER_NODE_FILE_EXT, e.g. /dev/dri/renderD128
-  int cuda_index = -1;       // EGL_CUDA_DEVICE_NV (NVIDIA), -1 when not offered
-  std::string extensions;    // the device's extension string
+  std::string name;         // EGL_RENDERER_EXT where offered, else the DRM node or "software"
+  std::string vendor;       // EGL_VENDOR of the device where offered
+  bool software = false;    // EGL_MESA_device_software
+  std::string drm_node;     // EGL_DRM_DEVICE_FILE_EXT, e.g. /dev/dri/card0
+  std::string render_node;  // EGL_DRM_RENDER_NODE_FILE_EXT, e.g. /dev/dri/renderD128
+  int cuda_index = -1;      // EGL_CUDA_DEVICE_NV (NVIDIA), -1 when not offered
+  std::string extensions;   // the device's extension string
 };
 
 // Every device, in EGL's order; empty where the library cannot enumerate devices.

@@ -12,23 +12,23 @@
 namespace sdfreel {
 
 // X(type, name): one line per EGL entry point sdfreel calls.
-#define SDFREEL_EGL_FUNCTIONS(X)                       \
-  X(PFNEGLGETERRORPROC, GetError)                      \
-  X(PFNEGLQUERYSTRINGPROC, QueryString)                \
+#define SDFREEL_EGL_FUNCTIONS(X)                            \
+  X(PFNEGLGETERRORPROC, GetError)                           \
+  X(PFNEGLQUERYSTRINGPROC, QueryString)                     \
   X(PFNEGLGETPLATFORMDISPLAYEXTPROC, GetPlatformDisplayEXT) \
-  X(PFNEGLINITIALIZEPROC, Initialize)                  \
-  X(PFNEGLBINDAPIPROC, BindAPI)                        \
-  X(PFNEGLCHOOSECONFIGPROC, ChooseConfig)              \
-  X(PFNEGLCREATECONTEXTPROC, CreateContext)            \
-  X(PFNEGLDESTROYCONTEXTPROC, DestroyContext)          \
-  X(PFNEGLCREATEPBUFFERSURFACEPROC, CreatePbufferSurface) \
-  X(PFNEGLDESTROYSURFACEPROC, DestroySurface)          \
-  X(PFNEGLMAKECURRENTPROC, MakeCurrent)                \
+  X(PFNEGLINITIALIZEPROC, Initialize)                       \
+  X(PFNEGLBINDAPIPROC, BindAPI)                             \
+  X(PFNEGLCHOOSECONFIGPROC, ChooseConfig)                   \
+  X(PFNEGLCREATECONTEXTPROC, CreateContext)                 \
+  X(PFNEGLDESTROYCONTEXTPROC, DestroyContext)               \
+  X(PFNEGLCREATEPBUFFERSURFACEPROC, CreatePbufferSurface)   \
+  X(PFNEGLDESTROYSURFACEPROC, DestroySurface)               \
+  X(PFNEGLMAKECURRENTPROC, MakeCurrent)                     \
   X(PFNEGLGETCURRENTCONTEXTPROC, GetCurrentContext)
 
 // Present only where the client extensions EGL_EXT_device_enumeration / _query are.
-#define SDFREEL_EGL_DEVICE_FUNCTIONS(X)                  \
-  X(PFNEGLQUERYDEVICESEXTPROC, QueryDevicesEXT)          \
+#define SDFREEL_EGL_DEVICE_FUNCTIONS(X)                   \
+  X(PFNEGLQUERYDEVICESEXTPROC, QueryDevicesEXT)           \
   X(PFNEGLQUERYDEVICESTRINGEXTPROC, QueryDeviceStringEXT) \
   X(PFNEGLQUERYDEVICEATTRIBEXTPROC, QueryDeviceAttribEXT)
 
@@ -38,7 +38,9 @@ struct EglLibrary {
   SDFREEL_EGL_DEVICE_FUNCTIONS(SDFREEL_EGL_DECLARE)
 #undef SDFREEL_EGL_DECLARE
   PFNEGLGETPROCADDRESSPROC GetProcAddress = nullptr;
-  bool has_devices() const { return QueryDevicesEXT && QueryDeviceStringEXT; }
+  bool has_devices() const {
+    return QueryDevicesEXT && QueryDeviceStringEXT;
+  }
   // Whether the space-separated extension list `list` names `ext`.
   static bool has_extension(const char* list, const char* ext);
   // EGL_SUCCESS, EGL_BAD_ACCESS... as text, for error messages.

@@ -50,8 +50,8 @@ void EglPlatform::open_display(const std::string& device) {
     if (device != "software")
       throw GlPlatformError("EGL cannot enumerate devices here (no EGL_EXT_platform_device), so '" +
                             device + "' cannot be chosen; only the software device works");
-    display_ = egl_.GetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                          nullptr);
+    display_ =
+        egl_.GetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     device_ = "software";
     software_ = true;
   } else {
@@ -85,8 +85,8 @@ void EglPlatform::create_context() {
     throw GlPlatformError("EGL: device " + device_ + " has no OpenGL configuration");
   context_ = egl_.CreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
   if (context_ == EGL_NO_CONTEXT)
-    throw GlPlatformError("EGL: device " + device_ +
-                          " cannot create an OpenGL 4.5 core context (" + egl_.last_error() + ")");
+    throw GlPlatformError("EGL: device " + device_ + " cannot create an OpenGL 4.5 core context (" +
+                          egl_.last_error() + ")");
   if (surfaceless) return;
   const EGLint pbuffer_attribs[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
   surface_ = egl_.CreatePbufferSurface(display_, config, pbuffer_attribs);
@@ -125,6 +125,8 @@ void EglPlatform::destroy() {
   context_ = EGL_NO_CONTEXT;
 }
 
-EglPlatform::~EglPlatform() { destroy(); }
+EglPlatform::~EglPlatform() {
+  destroy();
+}
 
 }  // namespace sdfreel

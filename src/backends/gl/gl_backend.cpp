@@ -44,7 +44,7 @@ std::map<std::string, std::string> GlBackend::versions() const {
   std::map<std::string, std::string> v = {{"platform", platform_->name()},
                                           {"device", platform_->device()},
                                           {"mesa", mesa_version(version)},
-          {"gl_version", version},
+                                          {"gl_version", version},
                                           {"gl_renderer", gl.string(GL_RENDERER)}};
   platform_->release();
   return v;
@@ -54,8 +54,7 @@ void GlBackend::begin(const SceneInfo& scene) {
   scene_ = scene.make ? scene.make() : nullptr;
   if (!scene_) throw std::runtime_error("scene '" + scene.name + "' has no C++ implementation");
   if (scene.shader.empty())
-    throw std::runtime_error("scene '" + scene.name +
-                             "' has no GLSL shader for the GL backend");
+    throw std::runtime_error("scene '" + scene.name + "' has no GLSL shader for the GL backend");
   scene_shader_ = scene.shader;
   textures_.clear();
   textures_key_ = 0;

@@ -104,8 +104,8 @@ OsmesaPlatform::~OsmesaPlatform() {
 }
 
 bool OsmesaPlatform::try_make_current() {
-  return lib_->make_current(static_cast<OSMesaContext>(context_), dummy_buffer, GL_UNSIGNED_BYTE,
-                            1, 1);
+  return lib_->make_current(static_cast<OSMesaContext>(context_), dummy_buffer, GL_UNSIGNED_BYTE, 1,
+                            1);
 }
 
 void OsmesaPlatform::make_current() {
