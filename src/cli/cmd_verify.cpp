@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
@@ -18,7 +19,8 @@ namespace {
 struct VerifyOptions {
   RenderOptions render;
   std::string manifest;
-  std::string tolerance;  // "" (bit for bit) or "filament"
+  std::string tolerance;   // "" (bit for bit) or "filament"
+  bool fail_fast = false;  // stop at the first differing frame
 };
 
 // With a tolerance the renderer may differ (that is its purpose): only the settings must agree.
@@ -79,17 +81,19 @@ int run_verify(const VerifyOptions& o) {
     return verify_within_tolerance(pipe, selected_frames(tl, o.render), dir.empty() ? "." : dir,
                                    out_dir);
   int checked = 0;
+  std::vector<int> differing;
   for (int i : selected_frames(tl, o.render)) {
     auto it = ref.frames.find(i);
     if (it == ref.frames.end()) continue;
     RenderedFrame f = pipe.render(i);
+    ++checked;
     const ReferenceFrame& want = it->second;
     const bool linear_ok = want.linear_hash.empty() || f.linear_hash == want.linear_hash;
     if (linear_ok && f.display_md5 == want.display_md5) {
-      ++checked;
       std::fprintf(stderr, "frame %05d ok\n", i);
       continue;
     }
+    differing.push_back(i);
     std::filesystem::create_directories(out_dir);
     char name[64];
     std::snprintf(name, sizeof name, "/verify-%05d-", i);
@@ -108,11 +112,19 @@ int run_verify(const VerifyOptions& o) {
                  i, f.display_md5.c_str(), ref.kind.c_str(), want.display_md5.c_str(),
                  f.linear_hash.c_str(), ref.kind.c_str(),
                  want.linear_hash.empty() ? "-" : want.linear_hash.c_str(), written.c_str());
-    return 1;
+    if (o.fail_fast) return 1;
   }
   if (checked == 0) {
     std::fprintf(stderr, "sdfreel: verify failed: %s lists none of the selected frames\n",
                  o.manifest.c_str());
+    return 1;
+  }
+  if (!differing.empty()) {
+    std::string list;
+    for (size_t k = 0; k < differing.size(); ++k)
+      list += (k ? ", " : "") + std::to_string(differing[k]);
+    std::fprintf(stderr, "sdfreel: verify failed: %zu of %d frames differ: %s\n", differing.size(),
+                 checked, list.c_str());
     return 1;
   }
   std::fprintf(stderr, "verified %d frames: all hashes match\n", checked);
@@ -133,6 +145,7 @@ void add_verify_command(CLI::App& app, int& status) {
                   "filament: hold frames to the golden PNGs beside the manifest by Filament's "
                   "rule (for another renderer, e.g. a GPU) instead of by hash")
       ->check(CLI::IsMember({"filament"}));
+  cmd->add_flag("--fail-fast", o->fail_fast, "stop at the first frame that differs");
   cmd->callback([o, &status] { status = run_verify(*o); });
 }
 

@@ -2,9 +2,11 @@
 // framemd5 made by stock ffmpeg from the PNGs; anything else is bad input (exit 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "cli/harness.h"
+#include "io/frame_files.h"
 
 namespace sdfreel::test {
 namespace {
@@ -100,6 +102,63 @@ TEST(VerifyFramemd5, NeitherManifestNorFramemd5IsBadInputAndWritesNothing) {
   EXPECT_EQ(folder.status, 2) << folder.err;
   for (const auto& e : fs::directory_iterator(dir + "/out"))
     EXPECT_EQ(e.path().filename().string().rfind("verify-", 0), std::string::npos) << e.path();
+}
+
+TEST(VerifyFramemd5, GoesOnPastTheFirstDifferenceAndListsThemAll) {
+  const std::string dir = rendered("verify-all-differences");
+  std::string bad = with_hash_changed(read_file(dir + "/out/frames.framemd5"), 0);
+  bad = with_hash_changed(bad, 2);
+  write_file(dir + "/bad.framemd5", bad);
+  const RunResult r = run_sdfreel("verify t.toml --manifest bad.framemd5", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("frame 0 differs"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("frame 00001 ok"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("frame 2 differs"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2 of 3 frames differ: 0, 2"), std::string::npos) << r.err;
+  // --fail-fast: the old way, stopping at frame 0.
+  const RunResult fast = run_sdfreel("verify t.toml --manifest bad.framemd5 --fail-fast", dir);
+  EXPECT_EQ(fast.status, 1) << fast.err;
+  EXPECT_NE(fast.err.find("frame 0 differs"), std::string::npos) << fast.err;
+  EXPECT_EQ(fast.err.find("frame 2 differs"), std::string::npos) << fast.err;
+}
+
+TEST(VerifyManifest, NamesEachSettingThatDiffersWithBothValues) {
+  const std::string dir = rendered("verify-names-settings");
+  const RunResult r =
+      run_sdfreel("verify t.toml --manifest out/manifest.json --samples 3 --quality final", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("other settings"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("samples: 3 here, 1 in the manifest"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("quality: final here, draft in the manifest"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("resolution:"), std::string::npos) << r.err;
+}
+
+TEST(VerifyTolerance, HoldsFramesToTheGoldenPngsByFilamentsRule) {
+  const std::string dir = rendered("verify-tolerance");
+  const RunResult same =
+      run_sdfreel("verify t.toml --manifest out/manifest.json --tolerance filament", dir);
+  EXPECT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.err.find("verified 3 frames within tolerance"), std::string::npos) << same.err;
+  // Frame 1's golden turned white: far outside the rule; the others still pass.
+  ImageRGB16 white = read_png16(dir + "/out/frames/00001.png");
+  std::fill(white.pixels.begin(), white.pixels.end(), uint16_t(65535));
+  write_png16_atomic(dir + "/out/frames/00001.png", white);
+  const RunResult bad = run_sdfreel(
+      "verify t.toml --manifest out/manifest.json --tolerance filament --out diffs", dir);
+  EXPECT_EQ(bad.status, 1) << bad.err;
+  EXPECT_NE(bad.err.find("frame 00001 OUTSIDE tolerance"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("frame 00002 within tolerance"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("1 of 3 frames outside"), std::string::npos) << bad.err;
+  EXPECT_TRUE(fs::exists(dir + "/diffs/verify-00001-diff.png"));
+  EXPECT_FALSE(fs::exists(dir + "/diffs/verify-00000-diff.png"));
+}
+
+TEST(VerifyTolerance, OtherSettingsThanTheRendererStillFail) {
+  const std::string dir = rendered("verify-tolerance-settings");
+  const RunResult r = run_sdfreel(
+      "verify t.toml --manifest out/manifest.json --tolerance filament --samples 2", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("samples: 2 here, 1 in the manifest"), std::string::npos) << r.err;
 }
 
 }  // namespace
