@@ -44,7 +44,7 @@ VideoFileSink::~VideoFileSink() {
   if (!committed_) discard_temp_file(temp_);
 }
 
-int VideoFileSink::write_packet(void* opaque, uint8_t* buf, int size) {
+int VideoFileSink::write_packet(void* opaque, PacketBytes buf, int size) {
   auto* self = static_cast<VideoFileSink*>(opaque);
   if (self->error_ == 0 && ::lseek(self->fd_, self->position_, SEEK_SET) < 0) self->error_ = errno;
   if (self->error_ == 0) self->error_ = write_fully(self->fd_, buf, size_t(size));

@@ -22,7 +22,13 @@ class VideoFileSink {
   void commit();
 
  private:
-  static int write_packet(void* opaque, uint8_t* buf, int size);
+  // FFmpeg 7 (libavformat 61, Debian 13) made the buffer const; FFmpeg 5 (Debian 12) has it not.
+#if LIBAVFORMAT_VERSION_MAJOR >= 61
+  using PacketBytes = const uint8_t*;
+#else
+  using PacketBytes = uint8_t*;
+#endif
+  static int write_packet(void* opaque, PacketBytes buf, int size);
   static int64_t seek(void* opaque, int64_t offset, int whence);
 
   std::string final_, temp_;
