@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A single-node Slurm cluster on this machine, for tests and for trying `sdfreel slurm`:
-#   scripts/slurm-local.sh install        Debian 12's munge, slurmctld, slurmd, slurm-client
+#   scripts/slurm-local.sh install        Debian's munge, slurmctld, slurmd, slurm-client
 #   scripts/slurm-local.sh start DIR      munged, slurmctld and slurmd with all state in DIR
 #   scripts/slurm-local.sh stop DIR       stops them and removes DIR
 # start writes DIR/slurm.conf (localhost, this machine's cores) and DIR/env; `. DIR/env` points
