@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <string>
 
 #include "bench/micro_check.h"
 
@@ -19,6 +20,17 @@ struct Slot {
   double* rate;
 };
 
+// Google Benchmark 1.8 (Debian 13) replaced Run::error_occurred/error_message with
+// skipped/skip_message; 1.7 (Debian 12) has only the old pair. The overload that compiles wins.
+template <typename R>
+auto run_error(const R& r, int) -> decltype(r.skipped, std::string()) {
+  return r.skipped ? (r.skip_message.empty() ? "skipped" : r.skip_message) : "";
+}
+template <typename R>
+auto run_error(const R& r, long) -> decltype(r.error_occurred, std::string()) {
+  return r.error_occurred ? (r.error_message.empty() ? "error" : r.error_message) : "";
+}
+
 // Collects the evaluation rate of every repetition, by registered name, and prints a line per
 // repetition to stderr (the machine is shared: a slow outlier is visible, the median drops it).
 class RateCollector : public benchmark::BenchmarkReporter {
@@ -28,8 +40,9 @@ class RateCollector : public benchmark::BenchmarkReporter {
     for (const Run& r : runs) {
       if (r.run_type != Run::RT_Iteration) continue;  // medians are taken here, from every run
       const std::string& name = r.run_name.function_name;
-      if (r.error_occurred) {
-        errors_ += name + ": " + r.error_message + "\n";
+      const std::string error = run_error(r, 0);
+      if (!error.empty()) {
+        errors_ += name + ": " + error + "\n";
         continue;
       }
       const auto c = r.counters.find(RATE_COUNTER);
