@@ -54,7 +54,7 @@ TEST(BenchCommand, WritesTableCsvPlotAndReusesTheReference) {
 }
 
 TEST(BenchCommand, BadUsageExitsWithTwo) {
-  const std::string dir = test::scratch_dir("bench-command");
+  const std::string dir = test::scratch_dir("bench-command-usage");
   EXPECT_EQ(test::run_sdfreel("bench no_such_scene --out " + dir).status, 2);
   EXPECT_EQ(test::run_sdfreel("bench sdf_morph --resolution 16by9 --out " + dir).status, 2);
   EXPECT_EQ(test::run_sdfreel("bench sdf_morph --frames 999999 --out " + dir).status, 2);

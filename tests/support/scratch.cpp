@@ -1,5 +1,6 @@
 #include "support/scratch.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,7 +10,10 @@ namespace sdfreel::test {
 namespace fs = std::filesystem;
 
 std::string scratch_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("sdfreel-test-" + name);
+  // ctest runs test_gl once per GL platform, possibly at the same time: each gets its own folders.
+  const char* platform = std::getenv("SDFREEL_GL_PLATFORM");
+  const std::string suffix = platform && *platform ? std::string("-") + platform : "";
+  const fs::path p = fs::temp_directory_path() / ("sdfreel-test-" + name + suffix);
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();
