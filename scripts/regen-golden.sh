@@ -2,28 +2,40 @@
 # Regenerates the committed golden hashes (tests/golden/<scene>/<name>.framemd5) from the current
 # build. GOLDEN_BACKENDS="gl" also renders on the GL backend and writes
 # <name>.gl.framemd5 where a backend differs from the CPU's hashes (and removes it where it
-# agrees: the golden test then holds that backend to the CPU's file).
-# Look at the frames it leaves in build/golden/<scene>/<name>/out-<backend>/frames/ before
+# agrees: the golden test then holds that backend to the CPU's file). GOLDEN_PER_MESA=1 with
+# GOLDEN_BACKENDS="gl" writes <name>.gl-mesa-X.Y.framemd5 instead, for this machine's Mesa, where
+# its llvmpipe differs from the files that apply otherwise (tests/gl/mesa_bits.h).
+# Look at the frames it leaves in build/golden/ ($BUILD_DIR/golden/ with BUILD_DIR)<scene>/<name>/out-<backend>/frames/ before
 # committing the result.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 root=$PWD
+build=$(realpath "${BUILD_DIR:-build}")
 # Files sdfreel can remake (the lenticular card's source views) stay in the build tree, as in tests.
-export SDFREEL_CACHE_DIR=${SDFREEL_CACHE_DIR:-$root/build/test-cache}
+export SDFREEL_CACHE_DIR=${SDFREEL_CACHE_DIR:-$build/test-cache}
 data_lines() { grep -v '^#' "$1"; }
 for timeline in tests/golden/*/*.toml; do
   scene=$(basename "$(dirname "$timeline")")
   name=$(basename "$timeline" .toml)
   golden=tests/golden/$scene/$name
-  work=build/golden/$scene/$name
+  work=$build/golden/$scene/$name
   rm -rf "$work" && mkdir -p "$work"
   cp "$timeline" "$work/t.toml"
   for backend in cpu ${GOLDEN_BACKENDS:-}; do
-    (cd "$work" && "$root/build/sdfreel" render t.toml --backend "$backend" --out "out-$backend")
+    (cd "$work" && "$build/sdfreel" render t.toml --backend "$backend" --out "out-$backend")
     hashes=$work/out-$backend/frames.framemd5
     if [ "$backend" = cpu ]; then
       cp "$hashes" "$golden.framemd5"
+    elif [ -n "${GOLDEN_PER_MESA:-}" ]; then
+      mesa=$(grep -o '"[a-z]*\.mesa": "[0-9]*\.[0-9]*' "$work/out-$backend/manifest.json" | grep -o '[0-9]*\.[0-9]*$')
+      base=$golden.framemd5
+      [ -f "$golden.gl.framemd5" ] && base=$golden.gl.framemd5
+      if [ "$(data_lines "$hashes")" = "$(data_lines "$base")" ]; then
+        rm -f "$golden.gl-mesa-$mesa.framemd5"
+      else
+        cp "$hashes" "$golden.gl-mesa-$mesa.framemd5"
+      fi
     elif [ "$(data_lines "$hashes")" = "$(data_lines "$golden.framemd5")" ]; then
       rm -f "$golden.$backend.framemd5"
     else
