@@ -1,7 +1,8 @@
 #pragma once
 // Where llvmpipe gives the C++ scenes' bits. The GLSL twins were made bit-identical to the CPU
-// backend on Mesa 22.3 (Debian 12, LLVM 15); Mesa 25.0 (Debian 13, LLVM 19) rounds a few pixels
-// of sdf_morph and water_lily one float ulp away (5 of 2304 pixels at 64x36, ~1e-8 apart). On a
+// backend on Mesa 22.3 (Debian 12, LLVM 15); on Mesa 25.0 (Debian 13, LLVM 19) sdf_morph's and
+// water_lily's floats differ in their last bits (5 to 1690 of 2304 pixels at 64x36, a display
+// mean of at most 0.005/255; the other scenes keep every bit). On a
 // Mesa not listed here the bit-exact tests hold Filament's rule instead and print how many pixels
 // differ, and the golden test reads <name>.gl-mesa-X.Y.framemd5 where it exists.
 #include <string>
