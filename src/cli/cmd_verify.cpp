@@ -8,6 +8,7 @@
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
 #include "cli/verify_tolerance.h"
+#include "io/display_compare.h"
 #include "io/frame_files.h"
 #include "io/hash_reference.h"
 #include "io/manifest_differences.h"
@@ -26,16 +27,6 @@ struct VerifyOptions {
 // With a tolerance the renderer may differ (that is its purpose): only the settings must agree.
 bool renderer_line(const std::string& line) {
   return line.rfind("backend:", 0) == 0 || line.rfind("versions.", 0) == 0;
-}
-
-// |a - b| per channel, scaled x16 so one-code differences are visible; black where equal.
-ImageRGB16 diff_image(const ImageRGB16& a, const ImageRGB16& b) {
-  ImageRGB16 d(a.width, a.height);
-  for (size_t i = 0; i < d.pixels.size(); ++i) {
-    const int v = std::abs(int(a.pixels[i]) - int(b.pixels[i])) * 16;
-    d.pixels[i] = uint16_t(std::min(v, 65535));
-  }
-  return d;
 }
 
 // A framemd5 holds no settings; its frame size at least tells another resolution or pixel format.
@@ -101,7 +92,7 @@ int run_verify(const VerifyOptions& o) {
     std::string written;
     if (std::filesystem::exists(reference)) {
       written = out_dir + name + "diff.png";
-      write_png16_atomic(written, diff_image(f.display, read_png16(reference)));
+      write_png16_atomic(written, difference_image(f.display, read_png16(reference), 16.0));
     } else {
       written = out_dir + name + "rendered.png";
       write_png16_atomic(written, f.display);
