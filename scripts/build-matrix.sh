@@ -59,6 +59,8 @@ check_one() {
   for toml in tests/golden/*/*.toml; do
     local name=${toml#tests/golden/}; name=${name%.toml}  # SCENE/NAME
     [ -f "tests/golden/$name.framemd5" ] || continue
+    # A user's shader runs on GL (llvmpipe): our compiler and its flags do not touch its pixels.
+    [[ $name == shader_* ]] && continue
     local out=$dir/golden/$name
     rm -rf "$out"
     mkdir -p "$(dirname "$out")"

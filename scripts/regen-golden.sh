@@ -5,7 +5,8 @@
 # agrees: the golden test then holds that backend to the CPU's file). GOLDEN_PER_MESA=1 with
 # GOLDEN_BACKENDS="gl" writes <name>.gl-mesa-X.Y.framemd5 instead, for this machine's Mesa, where
 # its llvmpipe differs from the files that apply otherwise (tests/gl/mesa_bits.h).
-# Look at the frames it leaves in build/golden/ ($BUILD_DIR/golden/ with BUILD_DIR)<scene>/<name>/out-<backend>/frames/ before
+# A user's shader's goldens (tests/golden/shader_<example>/) render on GL only, and their
+# <name>.framemd5 is the GL's. Look at the frames it leaves in build/golden/ ($BUILD_DIR/golden/ with BUILD_DIR)<scene>/<name>/out-<backend>/frames/ before
 # committing the result.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,11 +22,16 @@ for timeline in tests/golden/*/*.toml; do
   golden=tests/golden/$scene/$name
   work=$build/golden/$scene/$name
   rm -rf "$work" && mkdir -p "$work"
-  cp "$timeline" "$work/t.toml"
-  for backend in cpu ${GOLDEN_BACKENDS:-}; do
-    (cd "$work" && "$build/sdfreel" render t.toml --backend "$backend" --out "out-$backend")
+  # A user's shader (tests/golden/shader_*) has no CPU twin: its <name>.framemd5 is the GL's.
+  first=cpu
+  [[ $scene == shader_* ]] && first=gl
+  backends=$first
+  for b in ${GOLDEN_BACKENDS:-}; do [ "$b" = "$first" ] || backends+=" $b"; done
+  for backend in $backends; do
+    # In place, so that a shader is found beside the timeline where it names it.
+    (cd "$work" && "$build/sdfreel" render "$root/$timeline" --backend "$backend" --out "out-$backend")
     hashes=$work/out-$backend/frames.framemd5
-    if [ "$backend" = cpu ]; then
+    if [[ $backend == "$first" && ($first == cpu || -z ${GOLDEN_PER_MESA:-}) ]]; then
       cp "$hashes" "$golden.framemd5"
     elif [ -n "${GOLDEN_PER_MESA:-}" ]; then
       mesa=$(grep -o '"[a-z]*\.mesa": "[0-9]*\.[0-9]*' "$work/out-$backend/manifest.json" | grep -o '[0-9]*\.[0-9]*$')

@@ -14,6 +14,7 @@
 #include "io/color.h"
 #include "pipeline/errors.h"
 #include "scenes/registry.h"
+#include "shader/shader_timeline.h"
 #include "timeline/rules.h"
 
 namespace sdfreel {
@@ -54,7 +55,9 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
 
 Timeline load_with_overrides(const RenderOptions& o) {
   OcioChecker checker;
-  Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker);
+  ShaderTimelineLoader shaders;
+  Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker, &shaders);
+  backend_for(tl, o.backend);  // refuses --backend cpu for a shader before anything is written
   if (!o.resolution.empty()) {
     const Resolution r = parse_resolution_option(o.resolution);
     if (std::string problem = check_resolution(r.width, r.height); !problem.empty())
@@ -73,6 +76,15 @@ Timeline load_with_overrides(const RenderOptions& o) {
   return tl;
 }
 
+std::string backend_for(const Timeline& tl, const std::string& asked) {
+  if (!tl.shader_scene) return asked.empty() ? "cpu" : asked;
+  if (asked == "cpu")
+    throw UsageError("--backend cpu: " + tl.path +
+                     " renders a user's shader, which runs on the GL backend only (--backend gl, "
+                     "egl or osmesa)");
+  return asked.empty() ? "gl" : asked;
+}
+
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
   std::vector<int> frames;
   if (o.frames.empty()) {
@@ -85,7 +97,9 @@ std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
 }
 
 void add_backend_options(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("--backend", o.backend, "cpu | gl (EGL, else OSMesa) | egl | osmesa")
+  cmd->add_option(
+         "--backend", o.backend,
+         "cpu | gl (EGL, else OSMesa) | egl | osmesa (default cpu; gl for a user's shader)")
       ->check(CLI::IsMember(backend_names()));
   cmd->add_option("--gl-platform", o.gl.platform,
                   "egl | osmesa | auto, for --backend gl (env SDFREEL_GL_PLATFORM; default auto)")

@@ -16,8 +16,8 @@ namespace sdfreel {
 
 struct RenderOptions {
   std::string timeline_path;
-  std::string backend = "cpu";
-  GlChoice gl;  // --gl-platform, --gl-device
+  std::string backend;  // "" : cpu, or gl for a user's shader (backend_for)
+  GlChoice gl;          // --gl-platform, --gl-device
   std::string frames, shard, resolution, quality, out;
   int threads = 0;
   int samples = 0;
@@ -33,6 +33,9 @@ std::vector<std::string> backend_names();  // cpu gl egl osmesa
 // Loads and validates the timeline, then applies the overrides (re-validated). Throws InputError
 // or UsageError: nothing has been written yet.
 Timeline load_with_overrides(const RenderOptions& o);
+// The backend --backend names, or the timeline's default: gl for a user's shader (it has no CPU
+// twin; --backend cpu is a UsageError for it), cpu for a built-in scene.
+std::string backend_for(const Timeline& tl, const std::string& asked);
 // The frames to render: --frames and --shard applied to the timeline's frame range.
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
 // A backend by name (egl and osmesa: the GL backend on that platform); UsageError for unknown

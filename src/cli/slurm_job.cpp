@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <regex>
 
-#include "pipeline/errors.h"
 #include "cli/render_options.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 
@@ -48,7 +48,7 @@ std::string job_name(const std::string& timeline_path) {
 SlurmJob make_slurm_job(const SlurmOptions& o) {
   RenderOptions ro;
   ro.timeline_path = o.timeline_path;
-  ro.backend = o.backend.empty() ? "cpu" : o.backend;
+  ro.backend = o.backend;
   ro.resolution = o.resolution;
   ro.samples = o.samples;
   ro.quality = o.quality;

@@ -19,6 +19,15 @@ std::optional<std::string> find_non_finite(const ImageRGBA& img) {
   return std::nullopt;
 }
 
+size_t zero_non_finite(ImageRGBA& img, std::string* first) {
+  if (first)
+    if (auto bad = find_non_finite(img)) *first = *bad;
+  size_t count = 0;
+  for (float& v : img.pixels)
+    if (!std::isfinite(v)) v = 0.0f, ++count;
+  return count;
+}
+
 void round_to_half(ImageRGBA& img) {
   for (float& v : img.pixels) {
     const float c = v < 0.0f ? 0.0f : (v > 65504.0f ? 65504.0f : v);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "io/display_referred.h"
 #include "io/half_image.h"
 #include "io/hashing.h"
 #include "pipeline/errors.h"
@@ -14,6 +15,7 @@ FrameContext frame_context_at(const Timeline& tl, const SceneInfo& scene, int fr
   FrameContext ctx;
   ctx.frame_index = frame;
   ctx.video_time = t;
+  ctx.fps = tl.fps.value();
   ctx.scene_time = tl.time ? tl.time->sample(t).at(0) : t;
   ctx.width = tl.width;
   ctx.height = tl.height;
@@ -34,10 +36,12 @@ FrameContext frame_context(const Timeline& tl, const SceneInfo& scene, int frame
 
 FramePipeline::FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backend)
     : tl_(tl),
-      scene_(find_scene(tl.scene)),
+      scene_(tl.shader_scene ? tl.shader_scene.get() : find_scene(tl.scene)),
       backend_(std::move(backend)),
       display_(tl.color_config, tl.display, tl.view) {
   if (!scene_) throw UsageError("unknown scene '" + tl.scene + "'");
+  // Before begin: a shader with feedback replays earlier frames while it starts.
+  backend_->set_frame_source([this](int i) { return frame_context(tl_, *scene_, i); });
   backend_->begin(*scene_);
 }
 
@@ -51,11 +55,25 @@ RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
   f.ctx = ctx;
   const auto start = std::chrono::steady_clock::now();
   f.linear = backend_->render(ctx, f.stats);
+  if (scene_->shader_project) {  // Shadertoy code often divides by zero: shown black, as online
+    std::string first;
+    if (size_t n = zero_non_finite(f.linear, &first))
+      std::fprintf(stderr,
+                   "sdfreel: warning: frame %d: %zu NaN or infinite values written as 0 "
+                   "(the first: %s)\n",
+                   ctx.frame_index, n, first.c_str());
+  }
   if (auto bad = find_non_finite(f.linear))
     throw RenderError("frame " + std::to_string(ctx.frame_index) + ": " + *bad +
                       " (a frame with NaN or Inf is never written)");
-  round_to_half(f.linear);
-  f.display = display_.apply(f.linear);
+  if (scene_->display_referred) {  // the backend's numbers are the display's (docs/shaders.md)
+    f.display = quantised_display(f.linear);
+    f.linear = srgb_decoded(f.linear);
+    round_to_half(f.linear);
+  } else {
+    round_to_half(f.linear);
+    f.display = display_.apply(f.linear);
+  }
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   f.linear_hash = linear_half_hash(f.linear);
   f.display_md5 = md5_rgb48le(f.display);

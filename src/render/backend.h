@@ -1,6 +1,7 @@
 #pragma once
 // A backend turns (scene, frame context) into the linear image of that frame. Everything after
 // that (display transform, files, hashes, video) is shared and backend-agnostic.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -26,6 +27,9 @@ class Backend {
   virtual ImageRGBA render(const FrameContext& ctx, RayStats& stats) = 0;
   // Samples each pixel of the last rendered frame took (all the same unless adaptive).
   virtual const SampleCounts& sample_counts() const = 0;
+  // The context of any frame of the render: a user's shader with feedback replays its buffers
+  // through it (docs/shaders.md). Backends without such state ignore it.
+  virtual void set_frame_source(std::function<FrameContext(int)> source) { (void)source; }
 };
 
 }  // namespace sdfreel

@@ -14,6 +14,7 @@ namespace sdfreel {
 struct FrameContext {
   int frame_index = 0;
   double video_time = 0.0;  // t_i = i / fps, seconds
+  double fps = 30.0;        // the timeline's frame rate (a user's shader reads it: iFrameRate)
   double scene_time = 0.0;  // TIME, from the [time] curve; double so that 1e6 s keeps precision
   int width = 64, height = 36;
   int samples = 1;            // fixed sampling: every pixel takes this many

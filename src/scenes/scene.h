@@ -50,6 +50,8 @@ class Scene {
   virtual uint64_t shader_textures_key() const { return 0; }
 };
 
+struct ShaderProject;  // shader/shader_project.h
+
 struct SceneInfo {
   std::string name;
   std::string description;  // one paragraph, printed by `sdfreel scenes NAME`
@@ -59,7 +61,12 @@ struct SceneInfo {
   // packet-path and CPU-against-GL tests render these besides the poses of test_camera_poses().
   std::vector<CameraPose> test_poses;
   std::string shader;  // GLSL main file relative to shaders/ ("<scene>/<scene>.glsl"), for OSMesa
-  std::function<std::unique_ptr<Scene>()> make;
+  std::function<std::unique_ptr<Scene>()> make;  // empty for a user's shader (GL only)
+  // A user's shader (docs/shaders.md): what the GL backend runs instead of `shader`.
+  std::shared_ptr<const ShaderProject> shader_project;
+  // The backend's image is display-referred sRGB (a Shadertoy shader's own output): the display
+  // frame is that image as it is, the linear one its sRGB decoding; no [color] view applies.
+  bool display_referred = false;
 };
 
 // The poses the scene-wide tests render: the default camera, the same eye looking down steeply

@@ -61,6 +61,14 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
       r.fail(at ? at->source() : codec ? codec->source() : toml::source_region{}, problem);
     }
   }
+  // A display-referred shader's display pixels are its PNG's: its EXR (their sRGB decoding, in
+  // half floats) does not give them back bit for bit, so resume, encode and verify need the PNG.
+  if (tl.shader_scene && tl.shader_scene->display_referred && !tl.write_png) {
+    const toml::node* at = find(root, "output", "frames");
+    r.fail(at ? at->source() : toml::source_region{},
+           "output.frames of a display-referred shader must include \"png\" (its display "
+           "pixels are kept there; [shader] output = \"linear\" renders without it)");
+  }
   // The video's container must hold the codec: found here, not after the folder was made.
   if (std::string problem = check_video_name(tl.video, tl.codec); !problem.empty()) {
     const toml::node* at = find(root, "output", "video");
@@ -86,12 +94,13 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
 }  // namespace
 
 Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
-                       const ColorChecker* color) {
-  return parse_timeline(scenes, path, read_file(path), color);
+                       const ColorChecker* color, const ShaderLoader* shaders) {
+  return parse_timeline(scenes, path, read_file(path), color, shaders);
 }
 
 Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
-                        const std::string& text, const ColorChecker* color) {
+                        const std::string& text, const ColorChecker* color,
+                        const ShaderLoader* shaders) {
   if (std::optional<TextPosition> bad = find_invalid_utf8(text))
     throw InputError(path, bad->line, bad->column, "the file is not valid UTF-8");
 
@@ -108,8 +117,9 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
   }
 
   TomlReader r(path);
-  r.check_keys(root, "", {"video", "output", "color", "time", "camera", "params"});
-  const SceneInfo& scene = parse_video(r, root, scenes, tl);
+  r.check_keys(root, "",
+               {"video", "output", "color", "time", "camera", "params", "shader", "channels"});
+  const SceneInfo& scene = parse_video(r, root, scenes, shaders, tl);
   parse_output(r, root, tl);
   parse_color(r, root, tl);
   parse_time(r, root, tl);

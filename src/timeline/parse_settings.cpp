@@ -64,29 +64,61 @@ std::string timeline_stem(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
-}  // namespace
-
-const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
-                             const std::vector<SceneInfo>& scenes, Timeline& tl) {
-  const toml::table* video = section(r, root, "video");
-  if (!video) r.fail(toml::source_region{}, "missing table [video] (its 'scene' key is required)");
-  r.check_keys(
-      *video, "[video]",
-      {"scene", "fps", "duration", "resolution", "samples", "adaptive", "quality", "seed"});
-
-  const toml::node& scene_node = r.require(*video, "scene", "[video]");
+// [video] scene = NAME: one of the built-in scenes.
+const SceneInfo& parse_scene_key(const TomlReader& r, const toml::table& root,
+                                 const toml::table& video, const std::vector<SceneInfo>& scenes,
+                                 Timeline& tl) {
+  for (const char* table : {"shader", "channels"})
+    if (const toml::node* n = root.get(table))
+      r.fail(*n, std::string("[") + table +
+                     "] belongs to a timeline of a user's shader ([video] shader = \"PATH\"), "
+                     "not to a built-in scene's");
+  const toml::node& scene_node = r.require(video, "scene", "[video]");
   tl.scene = r.string(scene_node, "video.scene");
-  const SceneInfo* scene = nullptr;
   std::vector<std::string> names;
   for (const SceneInfo& s : scenes) {
     names.push_back(s.name);
-    if (s.name == tl.scene) scene = &s;
+    if (s.name == tl.scene) return s;
   }
-  if (!scene) {
-    std::string hint = did_you_mean(tl.scene, names);
-    r.fail(scene_node, "unknown scene '" + tl.scene + "'" +
-                           (hint.empty() ? " (known scenes: " + join(names, ", ") + ")" : hint));
-  }
+  std::string hint = did_you_mean(tl.scene, names);
+  r.fail(scene_node, "unknown scene '" + tl.scene + "'" +
+                         (hint.empty() ? " (known scenes: " + join(names, ", ") + ")" : hint));
+}
+
+// [video] shader = PATH: a user's shader (docs/shaders.md), relative to the timeline's folder.
+const SceneInfo& parse_shader_key(const TomlReader& r, const toml::table& root,
+                                  const toml::table& video, const ShaderLoader* shaders,
+                                  Timeline& tl) {
+  const toml::node& n = *video.get("shader");
+  if (video.contains("scene"))
+    r.fail(*video.get("scene"), "[video] names either a scene or a shader, not both");
+  const std::string given = r.string(n, "video.shader");
+  if (given.empty()) r.fail(n, "video.shader is empty: name a shader folder, .glsl or .json file");
+  if (!shaders) r.fail(n, "this command cannot render a user's shader");
+  namespace fs = std::filesystem;
+  tl.shader = fs::path(given).is_absolute()
+                  ? given
+                  : (fs::path(r.file()).parent_path() / given).lexically_normal().string();
+  tl.scene = "shader:" + given;
+  tl.shader_scene = shaders->load(r, root, tl.shader, tl.scene);
+  return *tl.shader_scene;
+}
+
+}  // namespace
+
+const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
+                             const std::vector<SceneInfo>& scenes, const ShaderLoader* shaders,
+                             Timeline& tl) {
+  const toml::table* video = section(r, root, "video");
+  if (!video)
+    r.fail(toml::source_region{},
+           "missing table [video] (its 'scene' or 'shader' key is required)");
+  r.check_keys(*video, "[video]",
+               {"scene", "shader", "fps", "duration", "resolution", "samples", "adaptive",
+                "quality", "seed"});
+  const SceneInfo* scene = video->contains("shader")
+                               ? &parse_shader_key(r, root, *video, shaders, tl)
+                               : &parse_scene_key(r, root, *video, scenes, tl);
 
   const toml::node* fps_node = video->get("fps");
   if (fps_node) tl.fps = parse_fps(r, *fps_node);
@@ -112,6 +144,7 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
     tl.width = int(w);
     tl.height = int(h);
   }
+  if (tl.shader_scene) tl.samples = 1;  // Shadertoy's one sample a pixel, unless asked
   if (const toml::node* n = video->get("samples")) {
     const int64_t s = r.integer(*n, "video.samples");
     if (std::string problem = check_samples(s); !problem.empty()) r.fail(*n, problem);
@@ -125,6 +158,9 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
   }
   if (const toml::node* n = video->get("seed"))
     tl.seed = uint64_t(r.integer_in(*n, "video.seed", 0, INT64_MAX));
+  if (tl.shader_scene)
+    if (const toml::node* n = video->get("adaptive"))
+      r.fail(*n, "video.adaptive is not defined for a user's shader yet: use samples = N");
   parse_adaptive(r, *video, tl);
   return *scene;
 }

@@ -4,14 +4,17 @@
 #include <vector>
 
 #include "scenes/scene.h"
+#include "timeline/shader_loader.h"
 #include "timeline/timeline.h"
 #include "timeline/toml_reader.h"
 
 namespace sdfreel {
 
-// [video]; returns the scene it names (required), one of `scenes`.
+// [video]; returns the scene it names (required), one of `scenes`, or the user's shader it names
+// read through `shaders` (kept in tl.shader_scene).
 const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
-                             const std::vector<SceneInfo>& scenes, Timeline& tl);
+                             const std::vector<SceneInfo>& scenes, const ShaderLoader* shaders,
+                             Timeline& tl);
 // [video] adaptive (after quality, whose preset gives the defaults).
 void parse_adaptive(const TomlReader& r, const toml::table& video, Timeline& tl);
 void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl);

@@ -29,6 +29,8 @@ struct Rational {
   double value() const { return double(num) / double(den); }
 };
 
+struct SceneInfo;
+
 struct CameraKey {
   double t = 0.0;
   CameraPose pose;
@@ -38,8 +40,8 @@ struct CameraPathTables;  // curves and arc-length table built from the keys (ca
 
 struct CameraPath {
   Interp interp = Interp::CatmullRom;
-  bool constant_speed = false;        // speed = "constant": arc-length re-parameterisation
-  std::vector<CameraKey> keys;        // empty: the scene's default camera
+  bool constant_speed = false;  // speed = "constant": arc-length re-parameterisation
+  std::vector<CameraKey> keys;  // empty: the scene's default camera
   // Builds the curves and the arc-length table once (the parser calls it); call again after
   // changing the fields. Without it, sample() builds them for every call.
   void prepare();
@@ -59,7 +61,10 @@ struct Timeline {
   std::string sha256;  // of the file's bytes, lowercase hex
 
   // [video]
-  std::string scene;
+  std::string scene;   // a built-in scene's name, or "shader:PATH" for a user's shader
+  std::string shader;  // [video] shader, resolved against the timeline's folder; "" for a scene
+  // The user's shader as a scene (params from its uniforms), made by the ShaderLoader.
+  std::shared_ptr<const SceneInfo> shader_scene;
   Rational fps;
   double duration = 10.0;
   int width = 1280, height = 720;
@@ -89,8 +94,6 @@ struct Timeline {
   double scene_time(int frame) const;  // TIME at video_time(frame)
 };
 
-struct SceneInfo;
-
 // Hooks the parser needs from the rest of the program, so this library does not depend on OCIO.
 struct ColorChecker {
   // Returns an error message, or "" when config/display/view exist.
@@ -99,14 +102,18 @@ struct ColorChecker {
   virtual ~ColorChecker() = default;
 };
 
+struct ShaderLoader;  // timeline/shader_loader.h
+
 // Reads, parses and validates a timeline file. Throws InputError on any bad input (spec's list).
 // `scenes`: the scenes a timeline may name (all_scenes() in the program), a hook like `color`, so
 // that this library does not link the scenes.
+// `shaders`: nullptr refuses `[video] shader`.
 Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
-                       const ColorChecker* color);
+                       const ColorChecker* color, const ShaderLoader* shaders = nullptr);
 // The same on the file's bytes already in memory (`path` names it in messages; fuzzing uses it).
 Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
-                        const std::string& text, const ColorChecker* color);
+                        const std::string& text, const ColorChecker* color,
+                        const ShaderLoader* shaders = nullptr);
 
 // Validates a timeline after command-line overrides (resolution, samples, codec size rules).
 // Throws InputError with the timeline path (line/column 0).

@@ -116,7 +116,8 @@ std::vector<std::string> scene_names() {
 INSTANTIATE_TEST_SUITE_P(Registered, SceneFiles, ::testing::ValuesIn(scene_names()),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 
-// Folders named after no registered scene (besides the shared common/) hold files no test reads.
+// Folders named after no registered scene (besides the shared common/, and the goldens of the
+// example shaders) hold files no test reads.
 TEST(SceneFolders, EachNamesARegisteredScene) {
   const std::vector<std::string> names = scene_names();
   const std::set<std::string> known(names.begin(), names.end());
@@ -124,7 +125,14 @@ TEST(SceneFolders, EachNamesARegisteredScene) {
        {"src/scenes", "shaders", "tests/scenes", "tests/golden", "tests/hard_cases"})
     for (const auto& e : fs::directory_iterator(source(place))) {
       const std::string name = e.path().filename().string();
-      if (e.is_directory() && name != "common") {
+      // tests/golden/shader_<example>/: the golden of a user's shader, examples/shaders/<example>.
+      const std::string example = name.rfind("shader_", 0) == 0 ? name.substr(7) : "";
+      if (!example.empty() && std::string(place) == "tests/golden") {
+        const fs::path shaders = source("examples/shaders");
+        EXPECT_TRUE(fs::exists(shaders / (example + ".glsl")) ||
+                    fs::is_directory(shaders / example))
+            << place << "/" << name << "/ names no example in examples/shaders/";
+      } else if (e.is_directory() && name != "common") {
         EXPECT_TRUE(known.count(name)) << place << "/" << name << "/ is not a registered scene";
       }
     }

@@ -88,7 +88,13 @@ namespace sdfreel {
   X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)               \
   X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)               \
   X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)         \
-  X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)
+  X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)         \
+  X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)               \
+  X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                   \
+  X(PFNGLGENSAMPLERSPROC, GenSamplers)                         \
+  X(PFNGLBINDSAMPLERPROC, BindSampler)                         \
+  X(PFNGLSAMPLERPARAMETERIPROC, SamplerParameteri)             \
+  X(PFNGLDELETESAMPLERSPROC, DeleteSamplers)
 
 struct GlApi {
 #define SDFREEL_GL_DECLARE(type, name) type name = nullptr;

@@ -4,6 +4,7 @@
 
 #include "backends/gl/frame_uniforms.h"
 #include "backends/gl/shader_dir.h"
+#include "shader/shader_hash.h"
 
 namespace sdfreel {
 
@@ -28,10 +29,12 @@ GlBackend::GlBackend(const GlChoice& choice) : platform_(make_gl_platform(choice
 GlBackend::~GlBackend() {
   try {
     platform_->make_current();  // the driver deletes its GL objects in this context
+    shadertoy_.reset();
     runner_.reset();
     driver_.reset();
     platform_->release();
   } catch (const GlPlatformError&) {
+    shadertoy_.release();
     runner_.release();
     driver_.release();  // no context to delete them in: destroying the context frees them
   }
@@ -47,10 +50,29 @@ std::map<std::string, std::string> GlBackend::versions() const {
                                           {"gl_version", version},
                                           {"gl_renderer", gl.string(GL_RENDERER)}};
   platform_->release();
+  if (project_) v["shader_sha256"] = shader_project_sha256(*project_);  // the user's code and files
   return v;
 }
 
+void GlBackend::set_frame_source(std::function<FrameContext(int)> source) {
+  frame_source_ = source;
+  if (shadertoy_) shadertoy_->set_frame_source(std::move(source));
+}
+
+void GlBackend::begin_shader(const SceneInfo& scene) {
+  project_ = scene.shader_project;
+  scene_.reset();
+  platform_->make_current();
+  shadertoy_.reset();
+  shadertoy_ = std::make_unique<ShadertoyRunner>(platform_->gl(), find_shader_dir(), project_);
+  shadertoy_->set_frame_source(frame_source_);
+  platform_->release();
+}
+
 void GlBackend::begin(const SceneInfo& scene) {
+  if (scene.shader_project) return begin_shader(scene);
+  shadertoy_.reset();
+  project_.reset();
   scene_ = scene.make ? scene.make() : nullptr;
   if (!scene_) throw std::runtime_error("scene '" + scene.name + "' has no C++ implementation");
   if (scene.shader.empty())
@@ -73,6 +95,13 @@ void GlBackend::begin(const SceneInfo& scene) {
 }
 
 ImageRGBA GlBackend::render(const FrameContext& ctx, RayStats& stats) {
+  if (shadertoy_) {
+    platform_->make_current();
+    ImageRGBA image = shadertoy_->render(ctx);
+    platform_->release();
+    counts_.assign(size_t(ctx.width) * size_t(ctx.height), uint16_t(ctx.sample_offsets.size()));
+    return image;
+  }
   if (!scene_) throw std::logic_error("GlBackend::render before begin");
   platform_->make_current();
   scene_->prepare(ctx);

@@ -9,6 +9,7 @@
 #include "backends/gl/gl_driver.h"
 #include "backends/gl/gl_plan_runner.h"
 #include "backends/gl/gl_platform_choice.h"
+#include "backends/gl/shadertoy_runner.h"
 #include "render/backend.h"
 #include "scenes/scene.h"
 
@@ -26,11 +27,16 @@ class GlBackend : public Backend {
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
   const SampleCounts& sample_counts() const override { return counts_; }
+  void set_frame_source(std::function<FrameContext(int)> source) override;
 
  private:
+  void begin_shader(const SceneInfo& scene);
   std::unique_ptr<GlPlatform> platform_;
-  std::unique_ptr<GlDriver> driver_;      // destroyed before the platform (needs its context)
-  std::unique_ptr<GlPlanRunner> runner_;  // destroyed before the driver
+  std::unique_ptr<GlDriver> driver_;            // destroyed before the platform (needs its context)
+  std::unique_ptr<GlPlanRunner> runner_;        // destroyed before the driver
+  std::unique_ptr<ShadertoyRunner> shadertoy_;  // a user's shader, instead of scene_
+  std::shared_ptr<const ShaderProject> project_;
+  std::function<FrameContext(int)> frame_source_;
   std::unique_ptr<Scene> scene_;
   std::string scene_shader_;
   std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_

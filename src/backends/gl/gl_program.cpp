@@ -27,17 +27,9 @@ std::string program_log(const GlApi& gl, GLuint program) {
 GLuint compile_stage(const GlApi& gl, GLenum stage, const std::string& dir, const std::string& file,
                      const std::string& defines) {
   const ShaderSource src = load_shader_source(dir, file, GLSL_VERSION + defines);
-  const GLuint shader = gl.CreateShader(stage);
-  const char* text = src.text.c_str();
-  gl.ShaderSource(shader, 1, &text, nullptr);
-  gl.CompileShader(shader);
-  GLint ok = GL_FALSE;
-  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    const std::string log = map_shader_log(shader_log(gl, shader), src, dir);
-    gl.DeleteShader(shader);
-    throw ShaderError("cannot compile " + file + ":\n" + log);
-  }
+  std::string log;
+  const GLuint shader = compile_shader_text(gl, stage, src.text, &log);
+  if (!shader) throw ShaderError("cannot compile " + file + ":\n" + map_shader_log(log, src, dir));
   return shader;
 }
 
@@ -69,6 +61,24 @@ void reflect_uniforms(const GlApi& gl, GlProgram& p) {
 }
 
 }  // namespace
+
+GLuint compile_shader_text(const GlApi& gl, GLenum stage, const std::string& text,
+                           std::string* log) {
+  const GLuint shader = gl.CreateShader(stage);
+  const char* p = text.c_str();
+  gl.ShaderSource(shader, 1, &p, nullptr);
+  gl.CompileShader(shader);
+  GLint ok = GL_FALSE;
+  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok) return shader;
+  *log = shader_log(gl, shader);
+  gl.DeleteShader(shader);
+  return 0;
+}
+
+GLuint compile_fullscreen_vertex(const GlApi& gl, const std::string& shader_dir) {
+  return compile_stage(gl, GL_VERTEX_SHADER, shader_dir, "common/fullscreen.vert", "");
+}
 
 GlProgram build_program(const GlApi& gl, const std::string& shader_dir, const GlProgramFiles& f) {
   GlProgram p;

@@ -31,6 +31,14 @@ struct GlProgram {
 // context.
 GlProgram build_program(const GlApi& gl, const std::string& shader_dir, const GlProgramFiles& f);
 
+// Compiles one stage from its whole text (#version included); 0, with the compiler's log in *log,
+// when it does not compile. Needs a current context.
+GLuint compile_shader_text(const GlApi& gl, GLenum stage, const std::string& text,
+                           std::string* log);
+// The full-screen triangle's vertex shader (common/fullscreen.vert), compiled; ShaderError when
+// it does not compile.
+GLuint compile_fullscreen_vertex(const GlApi& gl, const std::string& shader_dir);
+
 // Components per element of a uniform type (vec3 -> 3); 0 for samplers and unsupported types.
 int uniform_components(GLenum type);
 bool is_sampler(GLenum type);

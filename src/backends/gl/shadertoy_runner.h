@@ -1,0 +1,71 @@
+#pragma once
+// Runs a user's Shadertoy shader (docs/shaders.md) on the current GL context: every buffer pass
+// once per frame at the frame's size into float ping-pong textures (a pass reads the latest output
+// of each buffer: this frame's when it ran before, the previous frame's otherwise, itself
+// included), then the Image pass once per sub-pixel sample offset, summed in a float target in
+// fixed order. A shader with feedback replays its buffers from frame 0 (buffers only) whenever a
+// frame does not follow the one before it, so every frame has the same bits however it is reached.
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "backends/gl/gl_api.h"
+#include "render/frame_context.h"
+#include "render/image.h"
+#include "shader/shader_project.h"
+
+namespace sdfreel {
+
+class ShadertoyRunner {
+ public:
+  // Compiles every pass (InputError naming the user's file and line) and uploads the textures.
+  // `shader_dir`: sdfreel's own GLSL (the full-screen vertex shader).
+  ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
+                  std::shared_ptr<const ShaderProject> project);
+  ~ShadertoyRunner();
+  ShadertoyRunner(const ShadertoyRunner&) = delete;
+  ShadertoyRunner& operator=(const ShadertoyRunner&) = delete;
+
+  // The context of any frame, for replays and iTimeDelta.
+  void set_frame_source(std::function<FrameContext(int)> source) { source_ = std::move(source); }
+  // The display-referred (or linear, [shader] output) RGBA image of ctx's frame, row 0 at the top.
+  ImageRGBA render(const FrameContext& ctx);
+
+ private:
+  struct Program {
+    GLuint id = 0;
+    std::vector<std::pair<std::string, GLint>> locations;  // sdfreel's uniforms
+    std::vector<GLint> param_locations;  // the timeline's [params], looked up at the first frame
+    bool params_found = false;
+  };
+  struct Buffer {  // a buffer pass's two textures: front is its latest output
+    GLuint texture[2] = {0, 0};
+    int front = 0;
+  };
+  void resize(int width, int height);
+  void clear_buffers();
+  void run_buffers(const FrameContext& ctx);
+  void run_pass(const ShaderPass& pass, size_t index, const FrameContext& ctx, GLuint target,
+                const std::vector<glm::vec2>& offsets);
+  void set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx);
+  GLint location(size_t index, const char* name) const;
+  FrameContext context(int frame) const;
+  float time_delta(const FrameContext& ctx) const;
+
+  const GlApi& gl_;
+  std::shared_ptr<const ShaderProject> project_;
+  std::function<FrameContext(int)> source_;
+  std::vector<Program> programs_;    // one per pass, in project order
+  std::array<Buffer, 5> buffers_{};  // by PassKind (BufferA..CubeA)
+  std::array<bool, 5> mipmapped_{};  // by PassKind: some channel reads it with mipmap filtering
+  std::vector<GLuint> textures_;     // by pass index * 4 + channel: image files, 0 otherwise
+  std::vector<glm::ivec2> texture_sizes_;
+  std::vector<GLuint> samplers_;  // by pass index * 4 + channel
+  GLuint framebuffer_ = 0, image_texture_ = 0, vao_ = 0;
+  int width_ = 0, height_ = 0;
+  int buffers_at_ = -1;      // the last frame whose buffer passes ran, -1 none
+  float time_delta_ = 0.0f;  // iTimeDelta of the frame being rendered
+};
+
+}  // namespace sdfreel

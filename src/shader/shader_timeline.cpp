@@ -1,0 +1,57 @@
+#include "shader/shader_timeline.h"
+
+#include <filesystem>
+
+#include "shader/channel_tables.h"
+#include "shader/shader_files.h"
+#include "shader/shader_scene.h"
+
+namespace sdfreel {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> texture_dirs(const TomlReader& r, const toml::table* settings) {
+  std::vector<std::string> dirs;
+  const toml::node* n = settings ? settings->get("textures") : nullptr;
+  if (!n) return dirs;
+  const fs::path base = fs::path(r.file()).parent_path();
+  for (const toml::node& d : r.array(*n, "shader.textures"))
+    dirs.push_back((base / r.string(d, "shader.textures")).lexically_normal().string());
+  return dirs;
+}
+
+void read_settings(const TomlReader& r, const toml::table& s, ShaderProject& p) {
+  if (const toml::node* n = s.get("output"))
+    p.display_referred = r.choice(*n, "shader.output", {"display", "linear"}) == "display";
+  if (const toml::node* n = s.get("date")) {
+    const std::vector<double> d = r.numbers(*n, "shader.date", 4);
+    for (size_t i = 0; i < 4; ++i) p.date[i] = d[i];
+  }
+  if (const toml::node* n = s.get("sample_rate")) {
+    p.sample_rate = r.number(*n, "shader.sample_rate");
+    if (!(p.sample_rate > 0)) r.fail(*n, "shader.sample_rate must be > 0");
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<const SceneInfo> ShaderTimelineLoader::load(const TomlReader& r,
+                                                            const toml::table& root,
+                                                            const std::string& path,
+                                                            const std::string& name) const {
+  const toml::node* s = root.get("shader");
+  const toml::table* settings = s ? &r.table(*s, "shader") : nullptr;
+  if (settings) r.check_keys(*settings, "[shader]", {"output", "textures", "date", "sample_rate"});
+  auto project =
+      std::make_shared<ShaderProject>(read_shader_files(path, texture_dirs(r, settings)));
+  if (settings) read_settings(r, *settings, *project);
+  if (const toml::node* c = root.get("channels"))
+    apply_channel_tables(r, r.table(*c, "channels"), fs::path(r.file()).parent_path().string(),
+                         *project);
+  check_shader_project(*project);
+  return make_shader_scene(project, name);
+}
+
+}  // namespace sdfreel

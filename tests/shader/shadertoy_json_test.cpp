@@ -1,0 +1,93 @@
+// Shadertoy's JSON, both forms in circulation, read to the same passes and bindings; malformed
+// JSON and inputs sdfreel does not take are refused with the file (and line) named.
+#include "shader/shadertoy_json.h"
+
+#include <gtest/gtest.h>
+
+#include "timeline/timeline.h"
+
+namespace sdfreel {
+namespace {
+
+// The public API's form: {"Shader": ...}, inputs with ctype/src, string output ids.
+const char* kApi = R"({"Shader": {"info": {"id": "abcdef", "name": "feedback"}, "renderpass": [
+  {"inputs": [{"id": "4dXGR8", "src": "/media/previz/buffer00.png", "ctype": "buffer",
+               "channel": 0, "sampler": {"filter": "nearest", "wrap": "clamp", "vflip": "true"}}],
+   "outputs": [{"id": "4sXGR8", "channel": 0}],
+   "code": "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p); }",
+   "name": "Image", "description": "", "type": "image"},
+  {"inputs": [{"id": "4dXGR8", "src": "/media/previz/buffer00.png", "ctype": "buffer",
+               "channel": 1, "sampler": {"filter": "linear", "wrap": "repeat", "vflip": "true"}}],
+   "outputs": [{"id": "4dXGR8", "channel": 0}],
+   "code": "void mainImage(out vec4 c, in vec2 p) { c = vec4(twice(0.25)); }",
+   "name": "Buffer A", "description": "", "type": "buffer"},
+  {"inputs": [], "outputs": [], "code": "float twice(float x) { return 2.0 * x; }",
+   "name": "Common", "description": "", "type": "common"}]}})";
+
+// The site's own export: a list of shaders, inputs with type/filepath, numeric output ids.
+const char* kSite = R"([{"ver": "0.1", "info": {"id": "-1", "name": "feedback"}, "renderpass": [
+  {"inputs": [{"id": 257, "filepath": "/media/previz/buffer00.png", "type": "buffer",
+               "channel": 0, "sampler": {"filter": "nearest", "wrap": "clamp", "vflip": "true"}}],
+   "outputs": [{"id": 37, "channel": 0}],
+   "code": "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p); }",
+   "name": "Image", "description": "", "type": "image"},
+  {"inputs": [], "outputs": [], "code": "float twice(float x) { return 2.0 * x; }",
+   "name": "Common", "description": "", "type": "common"},
+  {"inputs": [{"id": 257, "filepath": "/media/previz/buffer00.png", "type": "buffer",
+               "channel": 1, "sampler": {"filter": "linear", "wrap": "repeat", "vflip": "true"}}],
+   "outputs": [{"id": 257, "channel": 0}],
+   "code": "void mainImage(out vec4 c, in vec2 p) { c = vec4(twice(0.25)); }",
+   "name": "Buf A", "description": "", "type": "buffer"}]}])";
+
+std::string error_of(const std::string& text) {
+  try {
+    read_shadertoy_json("s.json", text, {});
+  } catch (const InputError& e) {
+    return e.formatted();
+  }
+  return "";
+}
+
+TEST(ShadertoyJson, BothFormsReadToTheSamePasses) {
+  for (const char* text : {kApi, kSite}) {
+    const ShaderProject p = read_shadertoy_json("s.json", text, {});
+    EXPECT_EQ(p.common_source, "float twice(float x) { return 2.0 * x; }");
+    ASSERT_EQ(p.passes.size(), 2u);
+    const ShaderPass& a = p.passes[0];
+    const ShaderPass& image = p.passes[1];
+    EXPECT_EQ(a.kind, PassKind::BufferA);
+    EXPECT_EQ(image.kind, PassKind::Image);
+    EXPECT_NE(a.source.find("twice(0.25)"), std::string::npos);
+    // Image reads Buffer A on channel 0, nearest and clamped; Buffer A reads itself on 1.
+    EXPECT_EQ(image.channels[0].kind, ChannelKind::Pass);
+    EXPECT_EQ(image.channels[0].pass, PassKind::BufferA);
+    EXPECT_EQ(image.channels[0].filter, Filter::Nearest);
+    EXPECT_EQ(image.channels[0].wrap, Wrap::Clamp);
+    EXPECT_EQ(image.channels[1].kind, ChannelKind::None);
+    EXPECT_EQ(a.channels[1].kind, ChannelKind::Pass);
+    EXPECT_EQ(a.channels[1].pass, PassKind::BufferA);
+    EXPECT_EQ(a.channels[1].wrap, Wrap::Repeat);
+    EXPECT_TRUE(p.has_feedback());
+  }
+}
+
+TEST(ShadertoyJson, RefusalsNameWhatIsWrong) {
+  const std::string bad = error_of("{\"Shader\": {\n  \"renderpass\": [,]}}");
+  EXPECT_NE(bad.find("s.json:2:"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("not valid JSON"), std::string::npos) << bad;
+  EXPECT_NE(error_of("{\"name\": 1}").find("not a Shadertoy export"), std::string::npos);
+  EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "sound", "code": ""}]}})")
+                .find("Sound tab is not supported"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
+              {"ctype": "keyboard", "channel": 0}]}]}})")
+                .find("input of type 'keyboard' is not supported"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
+              {"ctype": "buffer", "id": "nope", "channel": 0}]}]}})")
+                .find("reads a buffer that no render pass writes"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace sdfreel
