@@ -9,6 +9,7 @@
 
 #include "gl/gl_fixture.h"
 #include "io/frame_files.h"
+#include "io/png_file.h"
 #include "support/run.h"
 #include "support/scratch.h"
 
@@ -207,6 +208,33 @@ TEST_F(Shadertoy, ResumeKeepsNoFrameOfAnEditedShader) {
   ASSERT_EQ(edited.status, 0) << edited.err;
   EXPECT_NE(edited.err.find("frame 3/3 done"), std::string::npos) << edited.err;
   EXPECT_NEAR(pixel(2, 0, 0, 0), 0.25, kStep);
+}
+
+TEST_F(Shadertoy, TextureChannelsReadPngFilesUprightUnlessUnflipped) {
+  // 1x2: the top row red, the bottom row green (8-bit, so 0.2 is 51).
+  const uint8_t rgb[] = {255, 51, 0, 0, 255, 0};
+  const std::vector<unsigned char> png = encode_png(1, 2, 3, 8, rgb);
+  test::write_file(dir + "/red_over_green.png", std::string(png.begin(), png.end()));
+  // Left half samples the texture's upper half, right half its lower half (nearest).
+  const char* shader =
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = texture(iChannel0, vec2(0.5, p.x < 4.0 ? 0.75 : 0.25));\n"
+      "}\n";
+  write(shader,
+        "\n[channels.image]\niChannel0 = { texture = \"red_over_green.png\", filter = "
+        "\"nearest\" }\n");
+  test::RunResult r = run_sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(pixel(0, 0, 0, 0), 1.0, kStep);  // upright: the top of the picture is red
+  EXPECT_NEAR(pixel(0, 0, 0, 1), 0.2, kStep);  // the file's numbers, no sRGB decoding
+  EXPECT_NEAR(pixel(0, 7, 0, 1), 1.0, kStep);
+  write(shader,
+        "\n[channels.image]\niChannel0 = { texture = \"red_over_green.png\", filter = "
+        "\"nearest\", vflip = false }\n");
+  r = run_sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(pixel(0, 0, 0, 1), 1.0, kStep);  // upside down, as WebGL uploads it
+  EXPECT_NEAR(pixel(0, 7, 0, 0), 1.0, kStep);
 }
 
 TEST_F(Shadertoy, NonFinitePixelsAreWrittenBlackWithAWarning) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "backends/gl/gl_program.h"
 #include "backends/gl/shadertoy_source.h"
@@ -70,7 +71,10 @@ ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
       glm::ivec2 size(0);
       if (b.kind == ChannelKind::Texture) {
         ImageRGBA image = read_texture_file(b.files.at(0));
-        if (!b.vflip) {  // GL's row 0 is the bottom: Shadertoy's vflip is the upload as it is
+        // Uploaded as read, the file's top row would be GL's row 0, at v = 0 (the bottom): the
+        // picture upside down, as WebGL shows it without flipping. Shadertoy's vflip (its
+        // default) flips it upright: the bottom row first.
+        if (b.vflip) {
           for (int y = 0; y < image.height / 2; ++y)
             std::swap_ranges(image.at(0, y), image.at(0, y) + 4 * image.width,
                              image.at(0, image.height - 1 - y));
@@ -171,6 +175,11 @@ ImageRGBA ShadertoyRunner::render(const FrameContext& ctx) {
   if (project_->has_feedback()) {
     // Frame k needs the buffers of frames 0..k-1: replay what is missing, from 0 if need be.
     if (buffers_at_ >= k || buffers_at_ < 0) clear_buffers();
+    if (buffers_at_ + 1 < k)  // a start, a shard or a resume: say why the first frame is slow
+      std::fprintf(stderr,
+                   "replaying the shader's buffers of frames %d-%d for frame %d (its frames "
+                   "depend on the ones before)\n",
+                   buffers_at_ + 1, k - 1, k);
     for (int i = buffers_at_ + 1; i < k; ++i) run_buffers(context(i));
   }  // without feedback every buffer is written before any pass reads it: nothing to clear
   run_buffers(ctx);

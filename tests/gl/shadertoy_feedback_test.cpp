@@ -1,0 +1,142 @@
+// A user's shader whose buffers read their own past (docs/shaders.md, "Frames that depend on
+// earlier frames"): every frame has the same bits rendered in sequence, alone, in two shards, on
+// resume after kill -9 and as a still, because a render that starts at frame k replays the
+// buffers from frame 0 first.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "gl/gl_fixture.h"
+#include "io/frame_files.h"
+#include "support/run.h"
+#include "support/scratch.h"
+
+namespace sdfreel {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_sdfreel;
+
+// Buffer A adds a pixel- and frame-dependent amount to its own last value (wrapping at 1): frame
+// k's buffer is a sum over frames 0..k, so a frame rendered without its past would differ.
+// Buffer B reads A of this frame and B of the last; Image shows both. `cost` loops make a frame
+// slow enough to be killed mid-render.
+std::string buffer_a(int cost) {
+  return "void mainImage(out vec4 c, in vec2 p) {\n"
+         "  vec4 last = texelFetch(iChannel0, ivec2(p), 0);\n"
+         "  float step = fract(sin(dot(p, vec2(12.9898, 78.233)) + float(iFrame)) * 43758.5453);\n"
+         "  float slow = 0.0;\n"
+         "  for (int i = 0; i < " +
+         std::to_string(cost) +
+         "; ++i) slow += sin(float(i) + p.x);\n"
+         "  c = vec4(fract(last.x + 0.25 * step + 1e-9 * slow), iTime, 0.0, 1.0);\n"
+         "}\n";
+}
+const char* kBufferB =
+    "void mainImage(out vec4 c, in vec2 p) {\n"
+    "  c = 0.5 * texelFetch(iChannel1, ivec2(p), 0) + 0.5 * texelFetch(iChannel0, ivec2(p), 0);\n"
+    "}\n";
+const char* kImage =
+    "void mainImage(out vec4 c, in vec2 p) {\n"
+    "  c = vec4(texture(iChannel0, p / iResolution.xy).x, shade(texture(iChannel1, p / "
+    "iResolution.xy).x), 0.5, 1.0);\n"
+    "}\n";
+const char* kCommon = "float shade(float x) { return x * x; }\n";
+const char* kChannels =
+    "[channels.buffer_a]\niChannel0 = \"self\"\n\n"
+    "[channels.buffer_b]\niChannel0 = \"buffer_a\"\niChannel1 = \"self\"\n\n"
+    "[channels.image]\niChannel0 = { pass = \"buffer_a\", filter = \"nearest\" }\n"
+    "iChannel1 = { pass = \"buffer_b\", filter = \"nearest\" }\n";
+
+class ShadertoyFeedback : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    SDFREEL_SKIP_WITHOUT_GL();
+    dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+  void TearDown() override {
+    if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
+  }
+  // The shader folder and a timeline of `frames` frames at 10 fps naming it.
+  void write(int frames, const std::string& resolution = "[16, 8]", int cost = 0) {
+    fs::create_directories(dir + "/tabs");
+    test::write_file(dir + "/tabs/buffer_a.glsl", buffer_a(cost));
+    test::write_file(dir + "/tabs/buffer_b.glsl", kBufferB);
+    test::write_file(dir + "/tabs/image.glsl", kImage);
+    test::write_file(dir + "/tabs/common.glsl", kCommon);
+    test::write_file(dir + "/tabs/channels.toml", kChannels);
+    test::write_file(
+        dir + "/t.toml",
+        "[video]\nshader = \"tabs\"\nfps = 10\nduration = " + std::to_string(frames / 10.0) +
+            "\nresolution = " + resolution + "\n\n[output]\nframes = [\"png\"]\nvideo = \"\"\n");
+  }
+  // The frame lines of out/frames.framemd5 (its # header left out).
+  std::vector<std::string> hashes(const std::string& out) {
+    std::istringstream in(test::read_file(dir + "/" + out + "/frames.framemd5"));
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && line[0] != '#') lines.push_back(line);
+    return lines;
+  }
+  std::string render(const std::string& out, const std::string& args = "") {
+    const test::RunResult r = run_sdfreel("render t.toml --out " + out + " " + args, dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return r.err;
+  }
+  std::string dir;
+};
+
+TEST_F(ShadertoyFeedback, FramesAreTheSameAloneInShardsOnResumeAndInSequence) {
+  write(8);
+  render("sequence");
+  const std::vector<std::string> all = hashes("sequence");
+  ASSERT_EQ(all.size(), 8u);
+  EXPECT_NE(all[6].substr(all[6].rfind(',')), all[7].substr(all[7].rfind(',')))
+      << "the frames should change";
+
+  // Alone: frame 6 replays frames 0..5 first, and says so.
+  const std::string err = render("alone", "--frames 6");
+  EXPECT_NE(err.find("replaying"), std::string::npos) << err;
+  ASSERT_EQ(hashes("alone").size(), 1u);
+  EXPECT_EQ(hashes("alone")[0], all[6]);
+
+  // llvmpipe's thread count changes nothing either.
+  const test::RunResult one =
+      run_sdfreel("render t.toml --out one-thread", dir, "LP_NUM_THREADS=1 ");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(hashes("one-thread"), all);
+
+  render("shards", "--shard 1/2");
+  render("shards", "--shard 0/2");
+  EXPECT_EQ(hashes("shards"), all);
+
+  render("resumed", "--frames 0-2,5");
+  render("resumed", "--resume");
+  EXPECT_EQ(hashes("resumed"), all);
+}
+
+TEST_F(ShadertoyFeedback, FramesAreTheSameAfterKillAndResume) {
+  write(30, "[128, 64]", 3000);
+  const test::RunResult killed = test::run(
+      "'" + test::sdfreel_binary() + "' render t.toml --out killed 2>/dev/null & pid=$!; " +
+          "for i in $(seq 1500); do n=$(ls killed/frames 2>/dev/null | grep -c png); " +
+          "[ \"$n\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
+      dir);
+  ASSERT_EQ(killed.out, "137\n") << "the render was not killed mid-run";
+  render("killed", "--resume");
+  render("sequence");
+  EXPECT_EQ(hashes("killed"), hashes("sequence"));
+}
+
+TEST_F(ShadertoyFeedback, StillAtATimeIsThatFrame) {
+  write(8);
+  render("sequence");
+  const test::RunResult r = run_sdfreel("still t.toml --time 0.5 -o still.png", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_png16(dir + "/still.png").pixels,
+            read_png16(dir + "/sequence/frames/00005.png").pixels);
+}
+
+}  // namespace
+}  // namespace sdfreel
