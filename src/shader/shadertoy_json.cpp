@@ -117,7 +117,12 @@ ShaderProject read_renderpasses(const JsonReader& r, const json& passes,
       for (const json& input : *in) {
         const int channel = input.value("channel", -1);
         if (channel < 0 || channel > 3) r.fail("an input's channel is not 0..3");
-        s.channels[size_t(channel)] = read_input(r, input, outputs, dirs);
+        try {
+          s.channels[size_t(channel)] = read_input(r, input, outputs, dirs);
+        } catch (const InputError& e) {  // name the pass and channel the input is bound to
+          r.fail(std::string(pass_name(s.kind)) + " iChannel" + std::to_string(channel) + ": " +
+                 e.what());
+        }
       }
     p.passes.push_back(std::move(s));
   }

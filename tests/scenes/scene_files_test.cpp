@@ -130,6 +130,7 @@ TEST(SceneFolders, EachNamesARegisteredScene) {
       if (!example.empty() && std::string(place) == "tests/golden") {
         const fs::path shaders = source("examples/shaders");
         EXPECT_TRUE(fs::exists(shaders / (example + ".glsl")) ||
+                    fs::exists(shaders / (example + ".json")) ||
                     fs::is_directory(shaders / example))
             << place << "/" << name << "/ names no example in examples/shaders/";
       } else if (e.is_directory() && name != "common") {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "support/scratch.h"
 #include "timeline/timeline.h"
 
 namespace sdfreel {
@@ -71,6 +74,27 @@ TEST(ShadertoyJson, BothFormsReadToTheSamePasses) {
   }
 }
 
+TEST(ShadertoyJson, TextureInputsAreFoundBesideTheJsonThenInTheTextureFolders) {
+  const std::string dir = test::scratch_dir("shadertoy-json-textures");
+  std::filesystem::create_directories(dir + "/media");
+  test::write_file(dir + "/noise.png", "png bytes");
+  test::write_file(dir + "/media/wood.png", "png bytes");
+  const std::string text = R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
+      {"ctype": "texture", "src": "/media/a/noise.png", "channel": 0,
+       "sampler": {"filter": "mipmap", "wrap": "repeat", "vflip": "false"}},
+      {"ctype": "texture", "src": "/media/a/wood.png", "channel": 3}]}]}})";
+  const ShaderProject p = read_shadertoy_json(dir + "/s.json", text, {dir + "/media"});
+  const ChannelBinding& noise = p.passes[0].channels[0];
+  EXPECT_EQ(noise.kind, ChannelKind::Texture);
+  EXPECT_EQ(noise.files, std::vector<std::string>({dir + "/noise.png"}));
+  EXPECT_FALSE(noise.vflip);
+  const ChannelBinding& wood = p.passes[0].channels[3];
+  EXPECT_EQ(wood.files, std::vector<std::string>({dir + "/media/wood.png"}));
+  EXPECT_TRUE(wood.vflip);  // Shadertoy's default for a texture
+  EXPECT_EQ(wood.filter, Filter::Mipmap);
+  EXPECT_EQ(wood.wrap, Wrap::Repeat);
+}
+
 TEST(ShadertoyJson, RefusalsNameWhatIsWrong) {
   const std::string bad = error_of("{\"Shader\": {\n  \"renderpass\": [,]}}");
   EXPECT_NE(bad.find("s.json:2:"), std::string::npos) << bad;
@@ -81,7 +105,12 @@ TEST(ShadertoyJson, RefusalsNameWhatIsWrong) {
             std::string::npos);
   EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
               {"ctype": "keyboard", "channel": 0}]}]}})")
-                .find("input of type 'keyboard' is not supported"),
+                .find("image iChannel0: input of type 'keyboard' is not supported"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
+              {"ctype": "texture", "src": "/media/a/noise.png", "channel": 2}]}]}})")
+                .find("image iChannel2: texture /media/a/noise.png: no file noise.png beside the "
+                      "JSON"),
             std::string::npos);
   EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
               {"ctype": "buffer", "id": "nope", "channel": 0}]}]}})")
