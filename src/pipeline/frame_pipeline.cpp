@@ -8,6 +8,7 @@
 #include "io/hashing.h"
 #include "pipeline/errors.h"
 #include "scenes/registry.h"
+#include "shader/shader_project.h"
 
 namespace sdfreel {
 
@@ -55,7 +56,8 @@ RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
   f.ctx = ctx;
   const auto start = std::chrono::steady_clock::now();
   f.linear = backend_->render(ctx, f.stats);
-  if (scene_->shader_project) {  // Shadertoy code often divides by zero: shown black, as online
+  // Shadertoy code often divides by zero: shown black, as on the site, unless asked otherwise.
+  if (scene_->shader_project && scene_->shader_project->non_finite_black) {
     std::string first;
     if (size_t n = zero_non_finite(f.linear, &first))
       std::fprintf(stderr,

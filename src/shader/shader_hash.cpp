@@ -30,6 +30,7 @@ std::string shader_project_sha256(const ShaderProject& p) {
   add(bytes, p.display_referred ? "display" : "linear");
   for (double d : p.date) add(bytes, std::to_string(d));
   add(bytes, std::to_string(p.sample_rate));
+  add(bytes, p.non_finite_black ? "black" : "error");
   return sha256_hex(bytes);
 }
 

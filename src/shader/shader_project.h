@@ -51,6 +51,7 @@ struct ShaderProject {
   bool display_referred = true;  // output = "display": the numbers written are sRGB display values
   std::array<double, 4> date{2026.0, 0.0, 1.0, 0.0};  // iDate at TIME 0: year, month 0-11, day, s
   double sample_rate = 44100.0;
+  bool non_finite_black = true;  // NaN/Inf pixels written black (else the frame fails)
   std::vector<std::string> texture_dirs;  // where a JSON input's file is looked for
 
   const ShaderPass* find(PassKind kind) const;

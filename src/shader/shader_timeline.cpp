@@ -29,6 +29,8 @@ void read_settings(const TomlReader& r, const toml::table& s, ShaderProject& p) 
     const std::vector<double> d = r.numbers(*n, "shader.date", 4);
     for (size_t i = 0; i < 4; ++i) p.date[i] = d[i];
   }
+  if (const toml::node* n = s.get("non_finite"))
+    p.non_finite_black = r.choice(*n, "shader.non_finite", {"black", "error"}) == "black";
   if (const toml::node* n = s.get("sample_rate")) {
     p.sample_rate = r.number(*n, "shader.sample_rate");
     if (!(p.sample_rate > 0)) r.fail(*n, "shader.sample_rate must be > 0");
@@ -43,7 +45,9 @@ std::shared_ptr<const SceneInfo> ShaderTimelineLoader::load(const TomlReader& r,
                                                             const std::string& name) const {
   const toml::node* s = root.get("shader");
   const toml::table* settings = s ? &r.table(*s, "shader") : nullptr;
-  if (settings) r.check_keys(*settings, "[shader]", {"output", "textures", "date", "sample_rate"});
+  if (settings)
+    r.check_keys(*settings, "[shader]",
+                 {"output", "textures", "date", "sample_rate", "non_finite"});
   auto project =
       std::make_shared<ShaderProject>(read_shader_files(path, texture_dirs(r, settings)));
   if (settings) read_settings(r, *settings, *project);

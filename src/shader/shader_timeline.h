@@ -6,6 +6,7 @@
 //   textures = ["media"]      # where a Shadertoy JSON's texture files are looked for
 //   date = [2026, 0, 1, 0]    # iDate at TIME 0 (year, month 0-11, day, seconds)
 //   sample_rate = 44100       # iSampleRate
+//   non_finite = "black"      # or "error": a NaN or infinite pixel fails the frame
 #include "timeline/shader_loader.h"
 
 namespace sdfreel {

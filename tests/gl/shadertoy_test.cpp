@@ -87,6 +87,43 @@ TEST_F(Shadertoy, UniformsReachThePixelsWithShadertoysMeaning) {
   }
 }
 
+TEST_F(Shadertoy, TheTimelinesCameraAndParamsReachTheShader) {
+  write(
+      "uniform float speed = 1.0;\n"
+      "uniform vec3 tint;\n"
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  int x = int(p.x);\n"
+      "  vec3 centre = normalize(iCameraToWorld * vec3(0.0, 0.0, iCameraFocal));\n"
+      "  if (x == 0) c = vec4(iCameraPosition * 0.1 + 0.5, 1.0);\n"
+      "  else if (x == 1) c = vec4(iCameraFov / 100.0, iCameraFocal / 10.0, speed / 10.0, 1.0);\n"
+      "  else if (x == 2) c = vec4(centre * 0.5 + 0.5, 1.0);\n"
+      "  else if (x == 3) c = vec4(iCameraTarget * 0.1 + 0.5, 1.0);\n"
+      "  else if (x == 4) c = vec4(iCameraUp * 0.5 + 0.5, 1.0);\n"
+      "  else c = vec4(tint, 1.0);\n"
+      "}\n",
+      "\n[camera]\nkeys = [{ t = 0.0, position = [1.0, 2.0, -3.0], target = [0.0, 1.0, 0.0], "
+      "fov = 60.0 }]\n\n[params]\ntint = [0.1, 0.2, 0.3]\n\n[params.speed]\n"
+      "keys = [[0.0, 2.0], [0.2, 4.0]]\n");
+  const test::RunResult r = run_sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double position[3] = {1.0, 2.0, -3.0}, target[3] = {0.0, 1.0, 0.0};
+  double forward[3], length = 0.0;
+  for (int i = 0; i < 3; ++i)
+    forward[i] = target[i] - position[i], length += forward[i] * forward[i];
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE("component " + std::to_string(i));
+    EXPECT_NEAR(pixel(0, 0, 0, i), position[i] * 0.1 + 0.5, kStep);
+    EXPECT_NEAR(pixel(0, 2, 0, i), forward[i] / std::sqrt(length) * 0.5 + 0.5, 2 * kStep);
+    EXPECT_NEAR(pixel(0, 3, 0, i), target[i] * 0.1 + 0.5, kStep);
+    EXPECT_NEAR(pixel(0, 5, 0, i), 0.1 * (i + 1), kStep);  // a vec3 parameter
+  }
+  EXPECT_NEAR(pixel(0, 1, 0, 0), 0.6, kStep);                                // fov
+  EXPECT_NEAR(pixel(0, 1, 0, 1), 1.0 / std::tan(M_PI / 6.0) / 10.0, kStep);  // focal
+  EXPECT_GT(pixel(0, 4, 0, 1), 0.5 + 0.4);                                   // up: mostly +y
+  // An animated parameter: 2 at t = 0, 3 at t = 0.1, 4 at t = 0.2 (linear keys).
+  for (int f = 0; f < 3; ++f) EXPECT_NEAR(pixel(f, 1, 0, 2), (2.0 + f) / 10.0, kStep);
+}
+
 TEST_F(Shadertoy, TimeDeltaFollowsTheTimeCurveAndFrameStaysTheFrameNumber) {
   // TIME runs at twice the video's speed: iTime 0, 0.2, 0.4 and iTimeDelta 0.2; iFrame 0, 1, 2.
   write(kUniformShader, "\n[time]\nkeys = [[0.0, 0.0], [1.0, 2.0]]\n");
@@ -248,6 +285,15 @@ TEST_F(Shadertoy, NonFinitePixelsAreWrittenBlackWithAWarning) {
   EXPECT_NE(r.err.find("NaN or infinite values written as 0"), std::string::npos) << r.err;
   EXPECT_EQ(pixel(0, 0, 0, 0), 0.0);
   EXPECT_NEAR(pixel(0, 4, 0, 0), 0.5, kStep);
+  // Strict: the frame fails (exit 1) and is never written.
+  test::write_file(dir + "/t.toml",
+                   test::read_file(dir + "/t.toml") + "\n[shader]\nnon_finite = \"error\"\n");
+  fs::remove_all(dir + "/out");
+  const test::RunResult strict = run_sdfreel("render t.toml", dir);
+  EXPECT_EQ(strict.status, 1) << strict.err;
+  EXPECT_NE(strict.err.find("frame 0: pixel (0, 0) channel R is NaN"), std::string::npos)
+      << strict.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/frames/00000.png"));
 }
 
 }  // namespace
