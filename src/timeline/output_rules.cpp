@@ -10,7 +10,9 @@ namespace {
 
 struct Container {
   const char* extension;
-  const char* codecs[3];  // what libav's muxer accepts (tests/io checks this against libav)
+  // Our rule, the same on every FFmpeg: pairings libav's muxer accepts (tests/cli checks each
+  // against the installed libav; a newer one may accept more).
+  const char* codecs[3];
 };
 
 constexpr Container kContainers[] = {
