@@ -51,9 +51,10 @@ Curve read_curve(const TomlReader& r, const toml::table& t, const std::string& s
   return c;
 }
 
-// One camera key: t, position and target required; fov defaults to the scene's, roll to 0.
+// One camera key: t, position and target required; fov and roll keep the previous key's, as in
+// every animation tool (the first key: the scene's default fov and roll 0).
 CameraKey read_camera_key(const TomlReader& r, const toml::node& node, const std::string& name,
-                          const SceneInfo& scene) {
+                          const SceneInfo& scene, const CameraKey* previous) {
   const toml::table& t = r.table(node, name);
   r.check_keys(t, name, {"t", "position", "target", "fov", "roll"});
   CameraKey key;
@@ -61,7 +62,8 @@ CameraKey read_camera_key(const TomlReader& r, const toml::node& node, const std
   key.pose.position = r.point(r.require(t, "position", name), name + ".position");
   const toml::node& target = r.require(t, "target", name);
   key.pose.target = r.point(target, name + ".target");
-  key.pose.fov_deg = scene.default_camera.fov_deg;
+  key.pose.fov_deg = previous ? previous->pose.fov_deg : scene.default_camera.fov_deg;
+  key.pose.roll_deg = previous ? previous->pose.roll_deg : 0.0;
   if (const toml::node* fov = t.get("fov")) {
     key.pose.fov_deg = r.number(*fov, name + ".fov");
     if (!(key.pose.fov_deg > 0.0 && key.pose.fov_deg < 180.0))
@@ -98,8 +100,9 @@ void parse_camera(const TomlReader& r, const toml::table& root, const SceneInfo&
   const toml::array& keys = r.array(*keys_node, "camera.keys");
   for (size_t i = 0; i < keys.size(); ++i) {
     const std::string name = "camera.keys[" + std::to_string(i) + "]";
-    CameraKey key = read_camera_key(r, *keys.get(i), name, scene);
     const auto& done = tl.camera.keys;
+    CameraKey key =
+        read_camera_key(r, *keys.get(i), name, scene, done.empty() ? nullptr : &done.back());
     check_after(r, done.empty() ? std::nullopt : std::optional(done.back().t), key.t,
                 *keys.get(i)->as_table()->get("t"), name);
     tl.camera.keys.push_back(key);

@@ -190,6 +190,29 @@ roll = 15
   EXPECT_EQ(tl.camera.keys[1].pose.roll_deg, 15.0);
 }
 
+// A key that leaves out fov or roll holds the previous key's, as animation tools do: 55, (left
+// out), 40 zooms from 55 to 40 without passing through the scene's default (40 for sdf_morph).
+TEST_F(Parse, CameraKeysHoldThePreviousFovAndRoll) {
+  Timeline tl = load_timeline(all_scenes(), write(R"([video]
+scene = "sdf_morph"
+[camera]
+keys = [
+  { t = 0, position = [0, 1, -4], target = [0, 0, 0], fov = 55, roll = 10 },
+  { t = 1, position = [1, 1, -4], target = [0, 0, 0] },
+  { t = 2, position = [2, 1, -4], target = [0, 0, 0], fov = 40 },
+  { t = 3, position = [3, 1, -4], target = [0, 0, 0], roll = -5 },
+]
+)"),
+                              nullptr);
+  ASSERT_EQ(tl.camera.keys.size(), 4u);
+  const double fov[] = {55, 55, 40, 40}, roll[] = {10, 10, 10, -5};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(tl.camera.keys[i].pose.fov_deg, fov[i]) << "key " << i;
+    EXPECT_EQ(tl.camera.keys[i].pose.roll_deg, roll[i]) << "key " << i;
+  }
+  EXPECT_NEAR(tl.camera.sample(0.5, CameraPose{}).fov_deg, 55.0, 1e-9);  // held, not pulled to 40
+}
+
 TEST_F(Parse, TimeMayRunBackwardsAndHold) {
   Timeline tl = load_timeline(all_scenes(), write(R"([video]
 scene = "sdf_morph"
