@@ -13,6 +13,11 @@ std::optional<Interp> parse_interp(const std::string& name) {
   return std::nullopt;
 }
 
+const char* interp_name(Interp interp) {
+  static const char* names[] = {"step", "linear", "smooth", "catmull-rom"};
+  return names[int(interp)];
+}
+
 namespace {
 
 using Vec = std::vector<double>;

@@ -10,6 +10,7 @@ namespace sdfreel {
 
 enum class Interp { Step, Linear, Smooth, CatmullRom };
 std::optional<Interp> parse_interp(const std::string& name);
+const char* interp_name(Interp interp);  // as the timeline spells it
 
 struct Curve {
   Interp interp = Interp::Linear;

@@ -1,0 +1,99 @@
+// `sdfreel check TIMELINE`: everything `render` checks before it writes, and what it would make,
+// without rendering or writing anything (exit 0, or 2 with the same message as render).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "cli/camera_path_stats.h"
+#include "cli/commands_impl.h"
+#include "render/adaptive_sampling.h"
+#include "render/quality.h"
+#include "scenes/registry.h"
+#include "shader/shader_project.h"
+
+namespace sdfreel {
+
+namespace {
+
+void print_camera(const Timeline& tl, const SceneInfo& scene) {
+  const size_t keys = tl.camera.keys.size();
+  if (keys == 0) {
+    std::printf("camera:     the scene's default, still\n");
+    return;
+  }
+  const CameraPathStats s = camera_path_stats(tl, scene.default_camera);
+  std::printf(
+      "camera:     %zu key%s, %s interpolation%s; path %.2f units, top speed %.2f units/s "
+      "at t = %.2f s\n",
+      keys, keys == 1 ? "" : "s", interp_name(tl.camera.interp),
+      tl.camera.constant_speed ? " at constant speed" : "", s.length, s.top_speed, s.top_speed_at);
+}
+
+void print_output(const Timeline& tl, const std::vector<int>& frames) {
+  std::string files;
+  if (tl.write_exr) files += "frames/NNNNN.exr, ";
+  if (tl.write_png) files += "frames/NNNNN.png, ";
+  std::printf("output:     %s/ (%sframes.framemd5, manifest.json)\n", tl.out_dir.c_str(),
+              files.c_str());
+  if (tl.video.empty())
+    std::printf("video:      none\n");
+  else if (int(frames.size()) != tl.frame_count())
+    std::printf(
+        "video:      none: a partial frame range writes no video (then `sdfreel encode`)\n");
+  else if (tl.codec == "h264")
+    std::printf("video:      %s/%s (h264, crf %d)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.crf);
+  else
+    std::printf("video:      %s/%s (%s)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.codec.c_str());
+}
+
+int run_check(const RenderOptions& o) {
+  const Timeline tl = load_with_overrides(o);
+  const std::vector<int> frames = selected_frames(tl, o);
+  const SceneInfo* scene = tl.shader_scene ? tl.shader_scene.get() : find_scene(tl.scene);
+  if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
+  if (tl.shader_scene) {
+    // The shader is compiled as render would (a compile error exits 2 here too); nothing runs.
+    FramePipeline pipe(tl, make_backend(backend_for(tl, o.backend), o.threads, o.gl));
+    std::printf("shader:     %s (%zu pass%s, compiled on %s)\n", tl.shader.c_str(),
+                scene->shader_project->passes.size(),
+                scene->shader_project->passes.size() == 1 ? "" : "es",
+                pipe.backend().name().c_str());
+  } else {
+    std::printf("scene:      %s\n", tl.scene.c_str());
+  }
+  std::printf("frames:     %d at %lld/%lld fps (%.3f s); this run renders %zu (%d-%d)\n",
+              tl.frame_count(), (long long)tl.fps.num, (long long)tl.fps.den, tl.duration,
+              frames.size(), frames.empty() ? 0 : frames.front(),
+              frames.empty() ? 0 : frames.back());
+  std::printf("picture:    %dx%d, %s, quality %s\n", tl.width, tl.height,
+              tl.adaptive.enabled ? ("adaptive " + adaptive_text(tl.adaptive)).c_str()
+                                  : (std::to_string(tl.samples) +
+                                     (tl.samples == 1 ? " sample" : " samples") + " a pixel")
+                                        .c_str(),
+              quality_name(tl.quality));
+  print_camera(tl, *scene);
+  print_output(tl, frames);
+  std::printf("%s: ok, nothing written\n", tl.path.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, int& status) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "check", "validate a timeline as render would and print what it would make; writes nothing");
+  cmd->add_option("TIMELINE", o->timeline_path, "timeline file (TOML)")->required();
+  add_backend_options(cmd, *o);
+  cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
+  cmd->add_option("--shard", o->shard, "I/N: the I-th (0-based) of N contiguous parts");
+  cmd->add_option("--resolution", o->resolution, "WxH, overrides the timeline");
+  cmd->add_option("--samples", o->samples, "samples per pixel, 1..1024")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--quality", o->quality, "draft | final | reference")
+      ->check(CLI::IsMember({"draft", "final", "reference"}));
+  cmd->add_option("--out", o->out, "output folder, overrides [output] dir");
+  cmd->add_flag("--no-video", o->no_video, "as render --no-video");
+  cmd->callback([o, &status] { status = run_check(*o); });
+}
+
+}  // namespace sdfreel
