@@ -93,6 +93,7 @@ void add_check_command(CLI::App& app, int& status) {
       ->check(CLI::IsMember({"draft", "final", "reference"}));
   cmd->add_option("--out", o->out, "output folder, overrides [output] dir");
   cmd->add_flag("--no-video", o->no_video, "as render --no-video");
+  add_preview_options(cmd, *o);
   cmd->callback([o, &status] { status = run_check(*o); });
 }
 

@@ -1,6 +1,8 @@
 #include "cli/render_options.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -33,6 +35,21 @@ struct OcioChecker : ColorChecker {
   }
 };
 
+// --preview and --scale. A side scales to the nearest even number (h264's rule), at least 2.
+void apply_preview(const RenderOptions& o, Timeline& tl) {
+  const double scale = o.scale > 0.0 ? o.scale : o.preview ? 0.25 : 1.0;
+  if (scale != 1.0) {
+    auto side = [&](int n) { return std::max(2, 2 * int(std::lround(n * scale / 2.0))); };
+    tl.width = side(tl.width);
+    tl.height = side(tl.height);
+  }
+  if (!o.preview) return;
+  tl.samples = 1;
+  tl.adaptive.enabled = false;
+  tl.quality = Quality::Draft;
+  tl.out_dir += "-preview";  // never over the real render's frames (--out still names the folder)
+}
+
 }  // namespace
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
@@ -51,6 +68,15 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
   cmd->add_flag("--resume", o.resume,
                 "keep frames on disk whose hashes match the manifest, render the rest");
+  add_preview_options(cmd, o);
+}
+
+void add_preview_options(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_flag("--preview", o.preview,
+                "a quick look at the whole timeline: --scale 0.25, 1 sample, draft quality, into "
+                "the output folder's name + -preview (other options still override)");
+  cmd->add_option("--scale", o.scale, "both sides of the picture times this, e.g. 0.5")
+      ->check(CLI::Range(0.001, 16.0));
 }
 
 Timeline load_with_overrides(const RenderOptions& o) {
@@ -58,6 +84,7 @@ Timeline load_with_overrides(const RenderOptions& o) {
   ShaderTimelineLoader shaders;
   Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker, &shaders);
   backend_for(tl, o.backend);  // refuses --backend cpu for a shader before anything is written
+  apply_preview(o, tl);        // first, so that the options below override it
   if (!o.resolution.empty()) {
     const Resolution r = parse_resolution_option(o.resolution);
     if (std::string problem = check_resolution(r.width, r.height); !problem.empty())

@@ -23,9 +23,13 @@ struct RenderOptions {
   int samples = 0;
   bool no_video = false;
   bool resume = false;
+  bool preview = false;  // --preview: quarter size, 1 sample, draft, into <dir>-preview
+  double scale = 0.0;    // --scale: both sides times this (0: as the timeline says)
 };
 
 void add_render_options(CLI::App* cmd, RenderOptions& o);
+// --preview and --scale (render, verify and check).
+void add_preview_options(CLI::App* cmd, RenderOptions& o);
 // --backend, --gl-platform, --gl-device.
 void add_backend_options(CLI::App* cmd, RenderOptions& o);
 std::vector<std::string> backend_names();  // cpu gl egl osmesa
