@@ -1,5 +1,6 @@
 // `sdfreel render`: frames, manifest, framemd5 and video of a timeline.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -89,6 +90,11 @@ int run_render(const RenderOptions& o) {
     encoder = std::make_unique<VideoEncoder>(
         VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf});
 
+  if (frames.empty())  // a shard of more parts than frames
+    std::fprintf(stderr, "note: --shard %s of %d frames selects none: nothing to render\n",
+                 o.shard.c_str(), tl.frame_count());
+  const auto start = std::chrono::steady_clock::now();
+  int kept = 0;
   Progress progress(int(frames.size()));
   // Files, journal lines, video frames and progress lines go through one writer thread, in frame
   // order, while the next frame renders. Only that thread writes until finish().
@@ -100,6 +106,7 @@ int run_render(const RenderOptions& o) {
         if (it != previous->frames.end()) {
           if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
             // Already listed in the manifest consolidated above.
+            ++kept;
             writer.push([&progress, enc = encoder.get(), i, shown = std::move(*shown)] {
               if (enc) enc->add_frame(shown);
               progress.frame_done(i, 0.0, true);
@@ -129,6 +136,14 @@ int run_render(const RenderOptions& o) {
   }
   progress.finish();
   consolidate_manifest(dir, header);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const char* no_video = tl.video.empty() ? (o.no_video ? "no video (--no-video)" : "no video")
+                         : !whole         ? "no video (a partial frame range)"
+                                          : nullptr;
+  std::fprintf(stderr, "done: %zu frames in %s (%zu rendered, %d kept from before) in %.1f s%s%s\n",
+               frames.size(), dir.c_str(), frames.size() - size_t(kept), kept, seconds,
+               no_video ? "; " : "", no_video ? no_video : "");
   if (encoder) {
     encoder->finish();
     std::fprintf(stderr, "wrote %s/%s\n", dir.c_str(), tl.video.c_str());

@@ -36,6 +36,28 @@ TEST(Render, WritesFramesManifestFramemd5AndVideo) {
   EXPECT_NE(r.err.find("frame 4/4 done in "), std::string::npos) << r.err;
 }
 
+// A render ends with a line that says what it did, also without a video; an empty shard says so.
+TEST(Render, EndsWithASummaryLine) {
+  const std::string dir = scratch_dir("render-summary");
+  write_file(dir + "/t.toml", small_timeline(3));
+  RunResult r = run_sdfreel("render t.toml --no-video", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("done: 3 frames in out (3 rendered, 0 kept from before) in "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(" s; no video (--no-video)\n"), std::string::npos) << r.err;
+  r = run_sdfreel("render t.toml --resume --frames 1-2", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("done: 2 frames in out (0 rendered, 2 kept from before)"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("; no video (a partial frame range)\n"), std::string::npos) << r.err;
+  r = run_sdfreel("render t.toml --shard 0/31 --no-video --out empty", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--shard 0/31 of 3 frames selects none: nothing to render"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(Render, Framemd5MatchesStockFfmpegOnPngsAndOnFfv1Video) {
   if (!have_tool("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
   const std::string dir = scratch_dir("render-ffmpeg");
@@ -80,7 +102,7 @@ TEST(Render, ResumeAfterPartialRenderEqualsFullRender) {
   write_file(part + "/out/frames/00001.png", "not a png");
   const RunResult r = run_sdfreel("render t.toml --resume", part);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("kept"), std::string::npos);
+  EXPECT_NE(r.err.find(" kept (frame"), std::string::npos) << r.err;
   EXPECT_EQ(read_file(part + "/out/frames.framemd5"), read_file(full + "/out/frames.framemd5"));
   EXPECT_EQ(read_file(part + "/out/frames/00001.png"), read_file(full + "/out/frames/00001.png"));
   EXPECT_EQ(read_file(part + "/out/small.mkv"), read_file(full + "/out/small.mkv"));
@@ -124,8 +146,8 @@ TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
   // finished since manifest.json was last rebuilt): mid-run however fast the machine.
   const RunResult killed = run(
       "'" + std::string(SDFREEL_BINARY) + "' render t.toml --no-video & pid=$!; " +
-      "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.journal 2>/dev/null); " +
-      "[ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
+          "for i in $(seq 600); do n=$(grep -c '\"index\"' out/manifest.journal 2>/dev/null); " +
+          "[ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; kill -9 $pid; wait $pid; echo $?",
       dir);
   EXPECT_EQ(killed.out, "137\n") << "the render was not killed: " << killed.err;
   const auto m = read_manifest(dir + "/out/manifest.json");
@@ -136,7 +158,7 @@ TEST(Render, KilledRenderLeavesOnlyCompleteFramesListedInTheManifest) {
   const RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   size_t kept = 0;
-  for (size_t pos = 0; (pos = r.err.find("kept", pos)) != std::string::npos; ++pos) ++kept;
+  for (size_t pos = 0; (pos = r.err.find(" kept (frame", pos)) != std::string::npos; ++pos) ++kept;
   EXPECT_EQ(kept, m->frames.size());
   for (const auto& entry : fs::directory_iterator(dir + "/out/frames")) {
     const std::string name = entry.path().filename().string();

@@ -111,7 +111,7 @@ TEST(Slurm, TheScriptsRunAsSlurmWouldRenderTheSameFramesAsOneRender) {
   // A requeued task keeps the frames already written and renders none again.
   const RunResult again = run("SLURM_ARRAY_TASK_ID=1 sh render.sh", dir);
   ASSERT_EQ(again.status, 0) << again.err;
-  EXPECT_TRUE(contains(again.err, "kept")) << again.err;
+  EXPECT_TRUE(contains(again.err, " kept (frame")) << again.err;
   EXPECT_FALSE(contains(again.err, "done in")) << again.err;
 }
 
