@@ -4,6 +4,7 @@
 
 #include "cli/commands_impl.h"
 #include "scenes/registry.h"
+#include "timeline/suggest.h"
 
 namespace sdfreel {
 
@@ -26,7 +27,13 @@ int run_scenes(const std::string& name) {
     return 0;
   }
   const SceneInfo* s = find_scene(name);
-  if (!s) throw UsageError("unknown scene '" + name + "'; `sdfreel scenes` lists them");
+  if (!s) {
+    std::vector<std::string> names;
+    for (const SceneInfo& scene : all_scenes()) names.push_back(scene.name);
+    const std::string hint = did_you_mean(name, names);
+    throw UsageError("unknown scene '" + name + "'" +
+                     (hint.empty() ? "; `sdfreel scenes` lists them" : hint));
+  }
   std::printf("%s\n  %s\n\n", s->name.c_str(), s->description.c_str());
   const CameraPose& c = s->default_camera;
   std::printf("default camera: position = [%g, %g, %g], target = [%g, %g, %g], fov = %g\n\n",

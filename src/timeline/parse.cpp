@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -91,6 +92,31 @@ void check_across_tables(const TomlReader& r, const toml::table& root, const Tim
   }
 }
 
+// A key written above every table header (or with its header left out) lands at the top level:
+// name the table it belongs in, instead of calling it unknown.
+void check_top_level_keys(const TomlReader& r, const toml::table& root) {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> homes = {
+      {"[video]",
+       {"scene", "shader", "fps", "duration", "resolution", "samples", "adaptive", "quality",
+        "seed"}},
+      {"[output]", {"dir", "frames", "codec", "crf"}},
+      {"[color]", {"config", "display", "view"}},
+      {"[camera]", {"speed"}},
+      {"[camera], [time] or a [params.NAME] table", {"keys", "interpolation"}},
+  };
+  for (const auto& [key, node] : keys_in_file_order(root)) {
+    if (node->is_table()) continue;
+    const std::string name(key->str());
+    // video = "x.mp4" is [output]'s; video = 1 is a malformed [video] table (said later).
+    const char* output_video = name == "video" && node->is_string() ? "[output]" : nullptr;
+    for (const auto& [table, keys] : homes)
+      if (output_video || std::find(keys.begin(), keys.end(), name) != keys.end())
+        r.fail(key->source(), "key '" + name + "' is outside every table: it belongs under " +
+                                  (output_video ? output_video : table) +
+                                  " (a key goes below its table's header line)");
+  }
+}
+
 }  // namespace
 
 Timeline load_timeline(const std::vector<SceneInfo>& scenes, const std::string& path,
@@ -117,6 +143,7 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
   }
 
   TomlReader r(path);
+  check_top_level_keys(r, root);
   r.check_keys(root, "",
                {"video", "output", "color", "time", "camera", "params", "shader", "channels"});
   const SceneInfo& scene = parse_video(r, root, scenes, shaders, tl);

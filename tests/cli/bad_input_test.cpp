@@ -83,6 +83,12 @@ TEST(BadInput, UnknownCommandLineOptionsExitTwo) {
   EXPECT_EQ(run_sdfreel("render x.toml --bogus").status, 2);
   EXPECT_EQ(run_sdfreel("frobnicate").status, 2);
   EXPECT_EQ(run_sdfreel("scenes no_such_scene").status, 2);
+  // A near miss gets the same "did you mean" as in a timeline.
+  const RunResult r = run_sdfreel("scenes water_lilly");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown scene 'water_lilly'; did you mean 'water_lily'?"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

@@ -32,6 +32,17 @@ TEST_F(BadInput, UnknownKeySuggestsTheClosest) {
                "unknown key 'fvo' in camera.keys[0]; did you mean 'fov'?", 4, 60);
 }
 
+TEST_F(BadInput, KeyOutsideItsTableNamesTheTable) {
+  expect_error("scene = \"sdf_morph\"\nfps = 30\n",
+               "key 'scene' is outside every table: it belongs under [video] (a key goes below "
+               "its table's header line)",
+               1, 1);
+  expect_error("video = \"v.mp4\"\n",
+               "key 'video' is outside every table: it belongs under [output]", 1, 1);
+  expect_error("keys = []\n[video]\nscene = \"sdf_morph\"\n",
+               "it belongs under [camera], [time] or a [params.NAME] table", 1, 1);
+}
+
 TEST_F(BadInput, MissingScene) {
   expect_error("[video]\nfps = 30\n", "missing key 'scene' in [video]", 1, 1);
   expect_error("[output]\ndir = \"x\"\n", "missing table [video]", 0, 0);
