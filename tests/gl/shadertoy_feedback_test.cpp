@@ -5,12 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <sstream>
 
-#include "gl/gl_fixture.h"
+#include "gl/gl_cli_fixture.h"
 #include "io/frame_files.h"
-#include "support/run.h"
-#include "support/scratch.h"
 
 namespace sdfreel {
 namespace {
@@ -49,15 +46,8 @@ const char* kChannels =
     "[channels.image]\niChannel0 = { pass = \"buffer_a\", filter = \"nearest\" }\n"
     "iChannel1 = { pass = \"buffer_b\", filter = \"nearest\" }\n";
 
-class ShadertoyFeedback : public ::testing::Test {
+class ShadertoyFeedback : public test::GlCliTest {
  protected:
-  void SetUp() override {
-    SDFREEL_SKIP_WITHOUT_GL();
-    dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-  }
-  void TearDown() override {
-    if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
-  }
   // The shader folder and a timeline of `frames` frames at 10 fps naming it.
   void write(int frames, const std::string& resolution = "[16, 8]", int cost = 0) {
     fs::create_directories(dir + "/tabs");
@@ -71,20 +61,14 @@ class ShadertoyFeedback : public ::testing::Test {
         "[video]\nshader = \"tabs\"\nfps = 10\nduration = " + std::to_string(frames / 10.0) +
             "\nresolution = " + resolution + "\n\n[output]\nframes = [\"png\"]\nvideo = \"\"\n");
   }
-  // The frame lines of out/frames.framemd5 (its # header left out).
   std::vector<std::string> hashes(const std::string& out) {
-    std::istringstream in(test::read_file(dir + "/" + out + "/frames.framemd5"));
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && line[0] != '#') lines.push_back(line);
-    return lines;
+    return test::framemd5_frame_lines(dir + "/" + out + "/frames.framemd5");
   }
   std::string render(const std::string& out, const std::string& args = "") {
     const test::RunResult r = run_sdfreel("render t.toml --out " + out + " " + args, dir);
     EXPECT_EQ(r.status, 0) << r.err;
     return r.err;
   }
-  std::string dir;
 };
 
 TEST_F(ShadertoyFeedback, FramesAreTheSameAloneInShardsOnResumeAndInSequence) {

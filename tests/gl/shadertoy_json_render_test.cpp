@@ -5,11 +5,8 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "gl/gl_fixture.h"
-#include "support/run.h"
-#include "support/scratch.h"
+#include "gl/gl_cli_fixture.h"
 
 namespace sdfreel {
 namespace {
@@ -18,15 +15,12 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::run_sdfreel;
 
-class ShadertoyJsonRender : public ::testing::Test {
+class ShadertoyJsonRender : public test::GlCliTest {
  protected:
   void SetUp() override {
-    SDFREEL_SKIP_WITHOUT_GL();
-    dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    GlCliTest::SetUp();
+    if (IsSkipped()) return;
     site = json::parse(test::read_file(test::source_path("examples/shaders/comet_trail.json")));
-  }
-  void TearDown() override {
-    if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
   }
   // Renders `shader` (relative to dir) at 32x18, 6 frames; the framemd5's frame lines.
   std::vector<std::string> render(const std::string& shader, const std::string& out) {
@@ -36,13 +30,8 @@ class ShadertoyJsonRender : public ::testing::Test {
                          "[output]\nframes = [\"png\"]\nvideo = \"\"\n");
     const test::RunResult r = run_sdfreel("render " + out + ".toml --out " + out, dir);
     EXPECT_EQ(r.status, 0) << r.err;
-    std::istringstream in(test::read_file(dir + "/" + out + "/frames.framemd5"));
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && line[0] != '#') lines.push_back(line);
-    return lines;
+    return test::framemd5_frame_lines(dir + "/" + out + "/frames.framemd5");
   }
-  std::string dir;
   json site;
 };
 

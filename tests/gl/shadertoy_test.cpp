@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "gl/gl_fixture.h"
+#include "gl/gl_cli_fixture.h"
 #include "io/frame_files.h"
 #include "io/png_file.h"
 #include "support/run.h"
@@ -31,15 +31,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 }
 )";
 
-class Shadertoy : public ::testing::Test {
+class Shadertoy : public test::GlCliTest {
  protected:
-  void SetUp() override {
-    SDFREEL_SKIP_WITHOUT_GL();
-    dir = test::scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-  }
-  void TearDown() override {
-    if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
-  }
   // A timeline beside `shader` (written as mine.glsl); `extra` appended.
   std::string write(const std::string& shader, const std::string& extra = "") {
     test::write_file(dir + "/mine.glsl", shader);
@@ -57,7 +50,6 @@ class Shadertoy : public ::testing::Test {
         read_png16(dir + "/out/frames/" + std::string(5 - name.size(), '0') + name + ".png");
     return img.pixels[3 * (size_t(y) * size_t(img.width) + size_t(x)) + size_t(c)] / 65535.0;
   }
-  std::string dir;
 };
 
 constexpr double kStep = 1.0 / 65535.0;  // one step of the 16-bit PNG
