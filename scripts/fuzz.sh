@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-25}
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(fuzz_timeline fuzz_manifest fuzz_cli_options)
+((${#targets[@]})) || targets=(fuzz_timeline fuzz_manifest fuzz_cli_options fuzz_shadertoy_json)
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -24,6 +24,7 @@ seeds_for() {
     fuzz_timeline) ls tests/golden/*/*.toml tests/hard_cases/*/*.toml timelines/*.toml ;;
     fuzz_manifest) ls tests/fuzz_seeds/manifest/* ;;
     fuzz_cli_options) ls tests/fuzz_seeds/cli_options/* ;;
+    fuzz_shadertoy_json) ls examples/shaders/*.json ;;
   esac
 }
 

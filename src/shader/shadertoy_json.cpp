@@ -144,6 +144,8 @@ ShaderProject read_shadertoy_json(const std::string& path, const std::string& te
     for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i, ++column)
       if (text[i] == '\n') ++line, column = 0;
     throw InputError(path, line, column, std::string("not valid JSON: ") + e.what());
+  } catch (const json::exception& e) {  // a number too large for a double, say
+    throw InputError(path, 0, 0, std::string("not valid JSON: ") + e.what());
   }
   const JsonReader r{path};
   if (j.is_array()) {  // the site's export: a list of shaders
@@ -153,7 +155,11 @@ ShaderProject read_shadertoy_json(const std::string& path, const std::string& te
   if (j.is_object() && j.contains("Shader")) j = j["Shader"];  // the public API's wrapping
   if (!j.is_object() || !j.contains("renderpass"))
     r.fail("not a Shadertoy export: expected {\"Shader\": {\"renderpass\": [...]}}");
-  return read_renderpasses(r, j["renderpass"], texture_dirs);
+  try {
+    return read_renderpasses(r, j["renderpass"], texture_dirs);
+  } catch (const json::exception& e) {  // a field of another type than Shadertoy writes
+    r.fail(std::string("not a Shadertoy export as sdfreel reads it: ") + e.what());
+  }
 }
 
 }  // namespace sdfreel

@@ -100,6 +100,12 @@ TEST(ShadertoyJson, RefusalsNameWhatIsWrong) {
   EXPECT_NE(bad.find("s.json:2:"), std::string::npos) << bad;
   EXPECT_NE(bad.find("not valid JSON"), std::string::npos) << bad;
   EXPECT_NE(error_of("{\"name\": 1}").find("not a Shadertoy export"), std::string::npos);
+  // Found by fuzz_shadertoy_json: these threw nlohmann's own exceptions (exit 1, or terminate).
+  EXPECT_NE(error_of("[1E400]").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
+              {"ctype": "buffer", "channel": "zero"}]}]}})")
+                .find("not a Shadertoy export as sdfreel reads it"),
+            std::string::npos);
   EXPECT_NE(error_of(R"({"Shader": {"renderpass": [{"type": "sound", "code": ""}]}})")
                 .find("Sound tab is not supported"),
             std::string::npos);
