@@ -182,13 +182,12 @@ ImageRGBA ShadertoyRunner::render(const FrameContext& ctx) {
                    buffers_at_ + 1, k - 1, k);
     for (int i = buffers_at_ + 1; i < k; ++i) run_buffers(context(i));
   }  // without feedback every buffer is written before any pass reads it: nothing to clear
-  run_buffers(ctx);
+  run_buffers(ctx);  // also sets this frame's iTimeDelta, which the Image pass reads
   buffers_at_ = k;
 
   std::vector<glm::vec2> offsets;  // GL's fragCoord counts rows from the bottom
   for (const glm::vec2& o : ctx.sample_offsets) offsets.push_back({o.x, 1.0f - o.y});
   const ShaderPass& image = project_->passes.back();
-  time_delta_ = time_delta(ctx);
   run_pass(image, project_->passes.size() - 1, ctx, image_texture_, offsets);
 
   ImageRGBA out(ctx.width, ctx.height);
