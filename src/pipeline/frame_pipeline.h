@@ -29,6 +29,9 @@ FrameContext frame_context_at(const Timeline& tl, const SceneInfo& scene, int fr
 class FramePipeline {
  public:
   FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backend);
+  // Stays where it was made: the backend's frame source (replays of a shader's buffers) calls it.
+  FramePipeline(const FramePipeline&) = delete;
+  FramePipeline& operator=(const FramePipeline&) = delete;
   // Throws RenderError when the image has a NaN/Inf (naming frame and pixel).
   RenderedFrame render(int frame);
   RenderedFrame render_context(const FrameContext& ctx);
