@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "io/quantise16.h"
 #include "render/data_files.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -74,14 +75,6 @@ std::vector<std::string> views_of(const OCIO::ConstConfigRcPtr& cfg, const std::
 
 bool contains(const std::vector<std::string>& items, const std::string& s) {
   return std::find(items.begin(), items.end(), s) != items.end();
-}
-
-// Clamp to [0,1] and round to 16 bits. NaN maps to 0 so that a bad pixel can never become an
-// out-of-range integer conversion (the renderer rejects NaN frames before this point anyway).
-uint16_t quantise16(float v) {
-  if (!(v > 0.0f)) return 0;
-  if (v >= 1.0f) return 65535;
-  return static_cast<uint16_t>(std::lround(v * 65535.0f));
 }
 
 // Rows converted per OCIO call: bounds the scratch buffer without per-pixel call overhead.

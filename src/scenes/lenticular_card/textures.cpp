@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/cache_file.h"
+#include "render/srgb.h"
 #include "scenes/common/periodic_fbm.h"
 #include "sdf/det_math.h"
 
@@ -15,11 +16,6 @@ constexpr float PRINT_REFLECTANCE = 0.9f;
 constexpr uint32_t RIDGE_SEED = 0x1e17c0deu;
 constexpr int RIDGE_CELLS = 8, RIDGE_OCTAVES = 4;
 constexpr float RIDGE_SLOPE_SCALE = 6.0f;
-
-float srgb_to_linear(uint8_t byte) {
-  const float c = float(byte) / 255.0f;
-  return c <= 0.04045f ? c / 12.92f : dm::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 ShaderTexture as_shader(const std::string& name, const Texture& t) {
   return ShaderTexture{name, t.width, t.height, t.channels, t.texels};
@@ -47,7 +43,7 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
   if (pa.width != pb.width || pa.height != pb.height)
     throw std::invalid_argument("lenticular_card: the two prints differ in size");
   float decode[256];
-  for (int i = 0; i < 256; ++i) decode[i] = srgb_to_linear(uint8_t(i)) * PRINT_REFLECTANCE;
+  for (int i = 0; i < 256; ++i) decode[i] = srgb_to_linear(float(i) / 255.0f) * PRINT_REFLECTANCE;
   auto print = std::make_shared<Texture>(pa.width, pa.height * 2, 4);
   std::string bytes;
   for (int y = 0; y < print->height; ++y)
