@@ -48,11 +48,11 @@ void print_output(const Timeline& tl, const std::vector<int>& frames) {
 int run_check(const RenderOptions& o) {
   const Timeline tl = load_with_overrides(o);
   const std::vector<int> frames = selected_frames(tl, o);
-  const SceneInfo* scene = tl.shader_scene ? tl.shader_scene.get() : find_scene(tl.scene);
+  const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
   if (tl.shader_scene) {
     // The shader is compiled as render would (a compile error exits 2 here too); nothing runs.
-    FramePipeline pipe(tl, make_backend(backend_for(tl, o.backend), o.threads, o.gl));
+    FramePipeline pipe(tl, timeline_backend(tl, o));
     std::printf("shader:     %s (%zu pass%s, compiled on %s)\n", tl.shader.c_str(),
                 scene->shader_project->passes.size(),
                 scene->shader_project->passes.size() == 1 ? "" : "es",
@@ -82,18 +82,7 @@ void add_check_command(CLI::App& app, int& status) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand(
       "check", "validate a timeline as render would and print what it would make; writes nothing");
-  cmd->add_option("TIMELINE", o->timeline_path, "timeline file (TOML)")->required();
-  add_backend_options(cmd, *o);
-  cmd->add_option("--frames", o->frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
-  cmd->add_option("--shard", o->shard, "I/N: the I-th (0-based) of N contiguous parts");
-  cmd->add_option("--resolution", o->resolution, "WxH, overrides the timeline");
-  cmd->add_option("--samples", o->samples, "samples per pixel, 1..1024")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--quality", o->quality, "draft | final | reference")
-      ->check(CLI::IsMember({"draft", "final", "reference"}));
-  cmd->add_option("--out", o->out, "output folder, overrides [output] dir");
-  cmd->add_flag("--no-video", o->no_video, "as render --no-video");
-  add_preview_options(cmd, *o);
+  add_frame_options(cmd, *o);
   cmd->callback([o, &status] { status = run_check(*o); });
 }
 

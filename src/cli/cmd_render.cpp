@@ -46,7 +46,7 @@ int run_render(const RenderOptions& o) {
   const bool whole = int(frames.size()) == tl.frame_count();
   const bool want_video = !tl.video.empty() && whole;
   // Everything that can fail on bad input or a missing backend happens before the first write.
-  FramePipeline pipe(tl, make_backend(backend_for(tl, o.backend), o.threads, o.gl));
+  FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
   const std::string& dir = tl.out_dir;
 

@@ -31,8 +31,7 @@ int run_still(const StillOptions& o) {
   RenderOptions ro = o.render;
   ro.no_video = true;  // a still has no video, so h264's even-size rule does not apply
   Timeline tl = load_with_overrides(ro);
-  FramePipeline pipe(
-      tl, make_backend(backend_for(tl, o.render.backend), o.render.threads, o.render.gl));
+  FramePipeline pipe(tl, timeline_backend(tl, o.render));
   const int frame = int(std::llround(o.time * tl.fps.value()));
   RenderedFrame f = pipe.render_context(frame_context_at(tl, pipe.scene(), frame, o.time));
   if (ext == ".exr")

@@ -52,8 +52,7 @@ int run_verify(const VerifyOptions& o) {
     throw UsageError(e.what());
   }
   Timeline tl = load_with_overrides(o.render);
-  FramePipeline pipe(
-      tl, make_backend(backend_for(tl, o.render.backend), o.render.threads, o.render.gl));
+  FramePipeline pipe(tl, timeline_backend(tl, o.render));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
   if (ref.header && !header.same_render_as(*ref.header)) {
     std::vector<std::string> lines = header_differences(header, *ref.header);

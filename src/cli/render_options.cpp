@@ -53,6 +53,12 @@ void apply_preview(const RenderOptions& o, Timeline& tl) {
 }  // namespace
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
+  add_frame_options(cmd, o);
+  cmd->add_flag("--resume", o.resume,
+                "keep frames on disk whose hashes match the manifest, render the rest");
+}
+
+void add_frame_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("TIMELINE", o.timeline_path, "timeline file (TOML)")->required();
   add_backend_options(cmd, o);
   cmd->add_option("--frames", o.frames, "frames to render, e.g. 0-99 or 1,5,9-12 (inclusive)");
@@ -66,12 +72,6 @@ void add_render_options(CLI::App* cmd, RenderOptions& o) {
       ->check(CLI::IsMember({"draft", "final", "reference"}));
   cmd->add_option("--out", o.out, "output folder, overrides [output] dir");
   cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
-  cmd->add_flag("--resume", o.resume,
-                "keep frames on disk whose hashes match the manifest, render the rest");
-  add_preview_options(cmd, o);
-}
-
-void add_preview_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--preview", o.preview,
                 "a quick look at the whole timeline: --scale 0.25, 1 sample, draft quality, into "
                 "the output folder's name + -preview (other options still override)");
@@ -110,6 +110,10 @@ std::string backend_for(const Timeline& tl, const std::string& asked) {
                      " renders a user's shader, which runs on the GL backend only (--backend gl, "
                      "egl or osmesa)");
   return asked.empty() ? "gl" : asked;
+}
+
+std::unique_ptr<Backend> timeline_backend(const Timeline& tl, const RenderOptions& o) {
+  return make_backend(backend_for(tl, o.backend), o.threads, o.gl);
 }
 
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {

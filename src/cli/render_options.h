@@ -27,9 +27,11 @@ struct RenderOptions {
   double scale = 0.0;    // --scale: both sides times this (0: as the timeline says)
 };
 
+// The timeline and what a render of it makes: backend, frames, shard, threads, resolution,
+// samples, quality, out, no-video, preview and scale (render, verify, check).
+void add_frame_options(CLI::App* cmd, RenderOptions& o);
+// add_frame_options and --resume.
 void add_render_options(CLI::App* cmd, RenderOptions& o);
-// --preview and --scale (render, verify and check).
-void add_preview_options(CLI::App* cmd, RenderOptions& o);
 // --backend, --gl-platform, --gl-device.
 void add_backend_options(CLI::App* cmd, RenderOptions& o);
 std::vector<std::string> backend_names();  // cpu gl egl osmesa
@@ -45,5 +47,7 @@ std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
 // A backend by name (egl and osmesa: the GL backend on that platform); UsageError for unknown
 // names, RenderError when it cannot start.
 std::unique_ptr<Backend> make_backend(const std::string& name, int threads, GlChoice gl = {});
+// The backend a command renders `tl` on: backend_for's choice with --threads and the GL options.
+std::unique_ptr<Backend> timeline_backend(const Timeline& tl, const RenderOptions& o);
 
 }  // namespace sdfreel

@@ -35,9 +35,13 @@ FrameContext frame_context(const Timeline& tl, const SceneInfo& scene, int frame
   return frame_context_at(tl, scene, frame, tl.video_time(frame));
 }
 
+const SceneInfo* timeline_scene(const Timeline& tl) {
+  return tl.shader_scene ? tl.shader_scene.get() : find_scene(tl.scene);
+}
+
 FramePipeline::FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backend)
     : tl_(tl),
-      scene_(tl.shader_scene ? tl.shader_scene.get() : find_scene(tl.scene)),
+      scene_(timeline_scene(tl)),
       backend_(std::move(backend)),
       display_(tl.color_config, tl.display, tl.view) {
   if (!scene_) throw UsageError("unknown scene '" + tl.scene + "'");

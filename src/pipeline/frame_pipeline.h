@@ -26,6 +26,10 @@ FrameContext frame_context(const Timeline& tl, const SceneInfo& scene, int frame
 // Same, at an arbitrary video time (for `still --time`).
 FrameContext frame_context_at(const Timeline& tl, const SceneInfo& scene, int frame, double t);
 
+// The scene a timeline renders: its user's shader, or the built-in scene it names (nullptr when
+// there is none of that name).
+const SceneInfo* timeline_scene(const Timeline& tl);
+
 class FramePipeline {
  public:
   FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backend);
