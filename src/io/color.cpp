@@ -1,4 +1,5 @@
-// OpenColorIO display transform: scene-linear Rec.709 -> display, quantised to 16 bits.
+// Display transform: scene-linear Rec.709 -> display, quantised to 16 bits; the shipped views in
+// sdfreel's own math, every other through OpenColorIO.
 #include "io/color.h"
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -13,6 +14,7 @@
 #include <system_error>
 
 #include "io/quantise16.h"
+#include "io/shipped_views.h"
 #include "render/data_files.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -98,7 +100,23 @@ std::string builtin_ocio_config_path() {
 
 struct DisplayTransform::Impl {
   std::string description;
+  // The shipped config's views are sdfreel's own math (io/shipped_views.h); every other view is
+  // OpenColorIO's CPU processor.
+  ShippedView shipped = nullptr;
   OCIO::ConstCPUProcessorRcPtr cpu;
+
+  void convert(float* rgba, int width, int rows) const {
+    if (!shipped) {
+      OCIO::PackedImageDesc desc(rgba, width, rows, 4);
+      cpu->apply(desc);
+      return;
+    }
+    for (size_t i = 0, n = size_t(width) * rows; i < n; ++i) {
+      float* p = rgba + i * 4;
+      const glm::vec3 out = shipped({p[0], p[1], p[2]});
+      p[0] = out.r, p[1] = out.g, p[2] = out.b;
+    }
+  }
 };
 
 DisplayTransform::DisplayTransform(const std::string& config, const std::string& display,
@@ -116,6 +134,10 @@ DisplayTransform::DisplayTransform(const std::string& config, const std::string&
   if (!cfg->hasRole(OCIO::ROLE_SCENE_LINEAR))
     throw std::runtime_error("OCIO config \"" + config + "\" defines no scene_linear role");
 
+  impl_->description = config + " / " + display + " / " + view;
+  if (config == "builtin") impl_->shipped = shipped_view(display, view);
+  if (impl_->shipped) return;
+
   try {
     OCIO::DisplayViewTransformRcPtr dvt = OCIO::DisplayViewTransform::Create();
     dvt->setSrc(OCIO::ROLE_SCENE_LINEAR);
@@ -129,7 +151,6 @@ DisplayTransform::DisplayTransform(const std::string& config, const std::string&
                              "\": " + e.what());
   }
 
-  impl_->description = config + " / " + display + " / " + view;
   // This variable makes OCIO override the optimisation chosen above, which can change pixels:
   // record it so that a hash mismatch explains itself.
   if (const char* flags = std::getenv("OCIO_OPTIMIZATION_FLAGS"); flags && *flags)
@@ -142,8 +163,8 @@ ImageRGB16 DisplayTransform::apply(const ImageRGBA& linear) const {
   ImageRGB16 out(linear.width, linear.height);
   const size_t row_floats = size_t(linear.width) * 4;
   const int chunks = (linear.height + kRowsPerChunk - 1) / kRowsPerChunk;
-  // The ACES output transform costs close to a microsecond a pixel, so chunks of rows run in
-  // parallel. Each pixel is converted on its own, so the result does not depend on the split;
+  // The ACES output transform costs close to a microsecond a pixel in OCIO, so chunks of rows run
+  // in parallel. Each pixel is converted on its own, so the result does not depend on the split;
   // the OCIO CPU processor is thread-safe and the scratch buffers are per task.
   tbb::parallel_for(tbb::blocked_range<int>(0, chunks), [&](const tbb::blocked_range<int>& r) {
     std::vector<float> scratch;
@@ -152,8 +173,7 @@ ImageRGB16 DisplayTransform::apply(const ImageRGBA& linear) const {
       const int rows = std::min(kRowsPerChunk, linear.height - y0);
       const float* src = linear.pixels.data() + size_t(y0) * row_floats;
       scratch.assign(src, src + size_t(rows) * row_floats);
-      OCIO::PackedImageDesc desc(scratch.data(), linear.width, rows, 4);
-      impl_->cpu->apply(desc);
+      impl_->convert(scratch.data(), linear.width, rows);
       uint16_t* dst = out.pixels.data() + size_t(y0) * linear.width * 3;
       const size_t n = size_t(rows) * linear.width;
       for (size_t i = 0; i < n; ++i)

@@ -1,5 +1,6 @@
 #pragma once
-// Scene-linear -> display transform through OpenColorIO, and quantisation to 16-bit.
+// Scene-linear -> display transform (the shipped views in sdfreel's own math, io/shipped_views.h;
+// any other config and view through OpenColorIO), and quantisation to 16-bit.
 #include <memory>
 #include <string>
 #include <vector>

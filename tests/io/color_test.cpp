@@ -14,6 +14,9 @@
 #include <stdexcept>
 #include <thread>
 
+#include "io/quantise16.h"
+#include "io/shipped_views.h"
+
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace sdfreel {
@@ -193,6 +196,37 @@ TEST(DisplayTransform, ConcurrentCallsGiveTheSameBitsAsOne) {
     ASSERT_TRUE(std::equal(out.pixels.begin(), out.pixels.end(),
                            reference.pixels.begin() + size_t(y) * img.width * 3))
         << "row " << y;
+  }
+}
+
+// "builtin" is sdfreel's own math (io/shipped_views.h), the same file by path is OpenColorIO's:
+// the builtin pixels are exactly the shipped view's, the path's exactly OCIO's processor's.
+TEST(DisplayTransform, BuiltinViewsAreOwnMathAndAConfigByPathIsOpenColorIO) {
+  std::vector<float> values;
+  for (int i = 0; i <= 64; ++i) values.push_back(std::ldexp(float(i * i), -8));  // 0 .. 16
+  const ImageRGBA ramp = grey_ramp(values);
+  const std::string path = builtin_ocio_config_path();
+  for (const char* view : {kAces, kRaw}) {
+    const ImageRGB16 builtin = DisplayTransform("builtin", kDisplay, view).apply(ramp);
+    const ShippedView own = shipped_view(kDisplay, view);
+    for (size_t i = 0; i < values.size(); ++i)
+      EXPECT_EQ(builtin.pixels[i * 3], quantise16(own(glm::vec3(values[i])).r)) << view;
+
+    OCIO::ConstConfigRcPtr cfg = OCIO::Config::CreateFromFile(path.c_str());
+    OCIO::DisplayViewTransformRcPtr dvt = OCIO::DisplayViewTransform::Create();
+    dvt->setSrc(OCIO::ROLE_SCENE_LINEAR);
+    dvt->setDisplay(kDisplay);
+    dvt->setView(view);
+    std::vector<float> rgba = ramp.pixels;
+    OCIO::PackedImageDesc desc(rgba.data(), ramp.width, 1, 4);
+    cfg->getProcessor(dvt)
+        ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                   OCIO::OPTIMIZATION_DEFAULT)
+        ->apply(desc);
+    const ImageRGB16 by_path = DisplayTransform(path, kDisplay, view).apply(ramp);
+    for (size_t i = 0; i < values.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(by_path.pixels[i * 3 + c], quantise16(rgba[i * 4 + c])) << view;
   }
 }
 
