@@ -5,10 +5,13 @@
 #include <cstdio>
 #include <map>
 
-#include "bench/bitmap_font.h"
-#include "bench/canvas.h"
+#include "draw/bitmap_font.h"
+#include "draw/canvas.h"
 
 namespace sdfreel::bench {
+using draw::Canvas;
+using draw::GLYPH_HEIGHT;
+using draw::Rgb;
 
 namespace {
 

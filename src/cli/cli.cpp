@@ -14,6 +14,7 @@ int run_cli(int argc, char** argv) {
   int status = 0;
   add_render_command(app, status);
   add_still_command(app, status);
+  add_sheet_command(app, status);
   add_check_command(app, status);
   add_verify_command(app, status);
   add_encode_command(app, status);

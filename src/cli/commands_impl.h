@@ -12,6 +12,7 @@ namespace sdfreel {
 
 void add_render_command(CLI::App& app, int& status);
 void add_still_command(CLI::App& app, int& status);
+void add_sheet_command(CLI::App& app, int& status);
 void add_verify_command(CLI::App& app, int& status);
 void add_encode_command(CLI::App& app, int& status);
 void add_scenes_command(CLI::App& app, int& status);

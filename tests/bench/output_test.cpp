@@ -8,7 +8,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "bench/canvas.h"
 #include "bench/csv.h"
 #include "bench/plot.h"
 #include "bench/reference_cache.h"
@@ -136,19 +135,6 @@ TEST(Plot, WritesAPngWithMarksAndText) {
   EXPECT_GT(blue, 50u);
   EXPECT_GT(dark, 500u);
   std::filesystem::remove_all(dir);
-}
-
-TEST(Canvas, TextDrawsGlyphs) {
-  Canvas c(40, 20, Rgb{1, 1, 1});
-  EXPECT_EQ(c.text(2, 2, "A1", Rgb{0, 0, 0}), 2 * Canvas::text_width("A"));
-  int inked = 0;
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 40; ++x) inked += c.at(x, y).r < 0.5f;
-  EXPECT_GT(inked, 10);
-  Canvas blank(40, 20, Rgb{1, 1, 1});
-  blank.text(2, 2, "  ", Rgb{0, 0, 0});
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 40; ++x) EXPECT_EQ(blank.at(x, y).r, 1.0f);
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 #pragma once
-// A small RGB raster for the bench plot: anti-aliased lines and discs, text in the built-in font.
+// A small RGB raster for the bench plot and the contact sheet: images, anti-aliased lines and
+// discs, text in the built-in font.
 #include <string>
 #include <vector>
 
-namespace sdfreel::bench {
+#include "render/image.h"
+
+namespace sdfreel::draw {
 
 struct Rgb {
   float r, g, b;
@@ -18,6 +21,8 @@ class Canvas {
   // Blends colour c over pixel (x, y) with coverage a (0..1); outside the canvas: nothing.
   void blend(int x, int y, Rgb c, float a);
   void fill_rect(int x0, int y0, int x1, int y1, Rgb c);  // [x0, x1) x [y0, y1)
+  // Copies display pixels with their top-left corner at (x, y), clipped to the canvas.
+  void image(int x, int y, const ImageRGB16& img);
   void line(float x0, float y0, float x1, float y1, float width, Rgb c);
   void disc(float cx, float cy, float radius, Rgb c);
   void ring(float cx, float cy, float radius, float width, Rgb c);
@@ -33,4 +38,4 @@ class Canvas {
   std::vector<float> px_;  // 3 floats per pixel
 };
 
-}  // namespace sdfreel::bench
+}  // namespace sdfreel::draw

@@ -1,14 +1,14 @@
-#include "bench/canvas.h"
+#include "draw/canvas.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "bench/bitmap_font.h"
+#include "draw/bitmap_font.h"
 #include "io/atomic_file.h"
 #include "io/png_file.h"
 
-namespace sdfreel::bench {
+namespace sdfreel::draw {
 
 namespace {
 
@@ -55,6 +55,14 @@ void Canvas::blend(int x, int y, Rgb c, float a) {
 void Canvas::fill_rect(int x0, int y0, int x1, int y1, Rgb c) {
   for (int y = std::max(y0, 0); y < std::min(y1, h_); ++y)
     for (int x = std::max(x0, 0); x < std::min(x1, w_); ++x) blend(x, y, c, 1.0f);
+}
+
+void Canvas::image(int x, int y, const ImageRGB16& img) {
+  for (int iy = std::max(0, -y); iy < img.height && y + iy < h_; ++iy)
+    for (int ix = std::max(0, -x); ix < img.width && x + ix < w_; ++ix)
+      for (int c = 0; c < 3; ++c)
+        px_[(size_t(y + iy) * w_ + (x + ix)) * 3 + c] =
+            float(img.pixels[(size_t(iy) * img.width + ix) * 3 + c]) / 65535.0f;
 }
 
 void Canvas::line(float x0, float y0, float x1, float y1, float width, Rgb c) {
@@ -111,8 +119,8 @@ void Canvas::write_png(const std::string& path) const {
     const std::vector<unsigned char> png = encode_png(w_, h_, 3, 8, bytes.data(), {6, -1, 0});
     write_file_atomic(path, png.data(), png.size());
   } catch (const std::exception& e) {
-    throw std::runtime_error("cannot write the plot " + path + ": " + e.what());
+    throw std::runtime_error("cannot write " + path + ": " + e.what());
   }
 }
 
-}  // namespace sdfreel::bench
+}  // namespace sdfreel::draw
