@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     sdfreel::Timeline tl =
         sdfreel::parse_timeline(sdfreel::all_scenes(), "fuzz.toml", text, nullptr);
     // What render does with a valid timeline before the first frame: frame count, times, camera.
-    sdfreel::validate_overrides(tl);
+    sdfreel::validate_overrides(tl, true);
     const int frames = tl.frame_count();
     for (int i : {0, frames / 2, frames - 1}) {
       (void)tl.scene_time(i);

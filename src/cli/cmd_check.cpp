@@ -5,6 +5,7 @@
 
 #include "cli/camera_path_stats.h"
 #include "cli/commands_impl.h"
+#include "cli/output_folder.h"
 #include "render/adaptive_sampling.h"
 #include "render/quality.h"
 #include "scenes/registry.h"
@@ -47,6 +48,7 @@ void print_output(const Timeline& tl, const std::vector<int>& frames) {
 
 int run_check(const RenderOptions& o) {
   const Timeline tl = load_with_overrides(o);
+  check_output_folder(tl.out_dir);
   const std::vector<int> frames = selected_frames(tl, o);
   const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
@@ -83,6 +85,7 @@ void add_check_command(CLI::App& app, int& status) {
   CLI::App* cmd = app.add_subcommand(
       "check", "validate a timeline as render would and print what it would make; writes nothing");
   add_frame_options(cmd, *o);
+  add_no_video_option(cmd, *o);
   cmd->callback([o, &status] { status = run_check(*o); });
 }
 

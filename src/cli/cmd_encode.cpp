@@ -31,10 +31,22 @@ Rational parse_fps(const std::string& s) {
   return r;
 }
 
+// Without --codec the container names it (.mp4 h264, .mkv ffv1, .mov prores). Where the render's
+// own codec fits the container as well and is another one (h264 in a .mkv), the name is
+// ambiguous: refused rather than writing a codec the user may not expect over a file of the other.
+std::string codec_of_output(const std::string& output, const std::string& render_codec) {
+  const std::string usual = usual_codec(output);
+  if (usual.empty() || usual == render_codec || !container_holds(output, render_codec))
+    return usual.empty() ? render_codec : usual;
+  throw UsageError("-o " + output + ": this container holds " + usual + " or the render's codec " +
+                   render_codec + "; say which with --codec " + usual + " or --codec " +
+                   render_codec);
+}
+
 int run_encode(const EncodeOptions& o) {
   const std::optional<Manifest> manifest = read_manifest_argument(o.dir + "/manifest.json");
   const ManifestHeader& h = manifest->header;
-  const std::string codec = o.codec.empty() ? h.codec : o.codec;
+  const std::string codec = o.codec.empty() ? codec_of_output(o.output, h.codec) : o.codec;
   if (!is_known_codec(codec))
     throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
   // The container must hold the codec: refused here, before a temporary video is created.
@@ -77,7 +89,9 @@ void add_encode_command(CLI::App& app, int& status) {
   CLI::App* cmd = app.add_subcommand("encode", "encode the frames of a render folder into a video");
   cmd->add_option("DIR", o->dir, "render output folder (with manifest.json)")->required();
   cmd->add_option("-o,--output", o->output, "video file to write")->required();
-  cmd->add_option("--codec", o->codec, "h264 | ffv1 | prores (default: the timeline's)");
+  cmd->add_option("--codec", o->codec,
+                  "h264 | ffv1 | prores (default: the container's: .mp4 h264, .mkv ffv1, .mov "
+                  "prores; a .mkv or .mov of a render in another codec that fits it asks)");
   cmd->add_option("--fps", o->fps, "frame rate, integer or N/D (default: the timeline's)");
   cmd->add_option("--crf", o->crf, "h264 quality, 0..51")->check(CLI::Range(0, 51));
   cmd->callback([o, &status] { status = run_encode(*o); });

@@ -49,6 +49,7 @@ int run_render(const RenderOptions& o) {
   FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
   const std::string& dir = tl.out_dir;
+  check_output_folder(dir);
 
   fs::create_directories(dir + "/frames");
   // A killed render may have left half-written temporaries (frames, manifest, video): never
@@ -141,9 +142,10 @@ int run_render(const RenderOptions& o) {
   const char* no_video = tl.video.empty() ? (o.no_video ? "no video (--no-video)" : "no video")
                          : !whole         ? "no video (a partial frame range)"
                                           : nullptr;
-  std::fprintf(stderr, "done: %zu frames in %s (%zu rendered, %d kept from before) in %.1f s%s%s\n",
-               frames.size(), dir.c_str(), frames.size() - size_t(kept), kept, seconds,
-               no_video ? "; " : "", no_video ? no_video : "");
+  std::fprintf(
+      stderr, "done: %zu frame%s in %s (%zu rendered, %d kept from before) in %.1f s%s%s\n",
+      frames.size(), frames.size() == 1 ? "" : "s", dir.c_str(), frames.size() - size_t(kept), kept,
+      seconds, no_video ? "; " : "", no_video ? no_video : "");
   if (encoder) {
     encoder->finish();
     std::fprintf(stderr, "wrote %s/%s\n", dir.c_str(), tl.video.c_str());

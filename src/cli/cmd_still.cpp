@@ -15,11 +15,20 @@ namespace {
 struct StillOptions {
   RenderOptions render;
   double time = 0.0;
+  bool has_time = false;
+  std::string frames;  // a mistake: still takes a time, render takes frames
   std::string output;
   std::string sample_counts;  // "" = none; .exr exact counts, .png heat map
 };
 
 int run_still(const StillOptions& o) {
+  if (!o.frames.empty())
+    throw UsageError(
+        "still renders one frame at a video time: --time SECONDS (frame N is at N / "
+        "fps seconds); for frames by number use `sdfreel render TIMELINE --frames " +
+        o.frames + "`");
+  if (!o.has_time)
+    throw UsageError("--time SECONDS is required: the video time of the frame to render");
   const std::string ext = std::filesystem::path(o.output).extension().string();
   if (ext != ".exr" && ext != ".png")
     throw UsageError("-o " + o.output + ": the file must end in .exr or .png");
@@ -62,7 +71,9 @@ void add_still_command(CLI::App& app, int& status) {
   auto o = std::make_shared<StillOptions>();
   CLI::App* cmd = app.add_subcommand("still", "render one frame at a video time to .exr or .png");
   cmd->add_option("TIMELINE", o->render.timeline_path, "timeline file (TOML)")->required();
-  cmd->add_option("--time", o->time, "video time in seconds")->required();
+  CLI::Option* time = cmd->add_option("--time", o->time, "video time in seconds (required)");
+  // Accepted only to answer the mistake with what to use instead (not in --help).
+  cmd->add_option("--frames", o->frames)->group("");
   cmd->add_option("-o,--output", o->output, "output file, .exr (linear) or .png (display)")
       ->required();
   add_backend_options(cmd, o->render);
@@ -75,7 +86,10 @@ void add_still_command(CLI::App& app, int& status) {
   cmd->add_option("--samples", o->render.samples, "samples per pixel")->check(CLI::Range(1, 1024));
   cmd->add_option("--quality", o->render.quality, "draft | final | reference")
       ->check(CLI::IsMember({"draft", "final", "reference"}));
-  cmd->callback([o, &status] { status = run_still(*o); });
+  cmd->callback([o, time, &status] {
+    o->has_time = time->count() > 0;
+    status = run_still(*o);
+  });
 }
 
 }  // namespace sdfreel

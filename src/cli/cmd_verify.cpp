@@ -127,7 +127,7 @@ int run_verify(const VerifyOptions& o) {
 void add_verify_command(CLI::App& app, int& status) {
   auto o = std::make_shared<VerifyOptions>();
   CLI::App* cmd = app.add_subcommand("verify", "re-render and compare every frame with a manifest");
-  add_render_options(cmd, o->render);
+  add_frame_options(cmd, o->render);  // no --no-video or --resume: verify writes no render
   cmd->add_option(
          "--manifest", o->manifest,
          "manifest.json or framemd5 (sdfreel's or ffmpeg -f framemd5) of an earlier render")

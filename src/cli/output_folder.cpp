@@ -7,6 +7,7 @@
 #include "io/frame_files.h"
 #include "io/hashing.h"
 #include "io/versions.h"
+#include "pipeline/errors.h"
 
 namespace sdfreel {
 
@@ -41,6 +42,20 @@ ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
   if (tl.write_exr) h.frame_files.push_back("exr");
   if (tl.write_png) h.frame_files.push_back("png");
   return h;
+}
+
+void check_output_folder(const std::string& dir) {
+  std::error_code ec;
+  for (std::filesystem::path p = std::filesystem::absolute(dir, ec); !p.empty();
+       p = p.parent_path()) {
+    const std::filesystem::file_status st = std::filesystem::status(p, ec);
+    if (std::filesystem::is_directory(st)) return;  // the rest can be made inside it
+    if (std::filesystem::exists(st))
+      throw UsageError(
+          "output folder " + dir + ": " + p.string() +
+          " is a file, not a folder; choose another folder with --out or [output] dir");
+    if (p == p.parent_path()) return;
+  }
 }
 
 std::optional<ImageRGB16> load_checked_frame(const std::string& dir, const ManifestHeader& header,

@@ -8,6 +8,9 @@
 namespace sdfreel {
 
 std::string frame_path(const std::string& dir, int index, const std::string& ext);
+// Throws UsageError when `dir` cannot be a folder because it, or a folder above it, is a file:
+// found before anything is written.
+void check_output_folder(const std::string& dir);
 ManifestHeader manifest_header(const Timeline& tl, Backend& backend);
 
 // Reads frame `index` back from `dir` and checks it against the manifest entry: PNG against the

@@ -42,6 +42,7 @@ void apply_preview(const RenderOptions& o, Timeline& tl) {
     auto side = [&](int n) { return std::max(2, 2 * int(std::lround(n * scale / 2.0))); };
     tl.width = side(tl.width);
     tl.height = side(tl.height);
+    tl.resolution_line = tl.resolution_column = 0;  // no longer the file's size
   }
   if (!o.preview) return;
   tl.samples = 1;
@@ -54,6 +55,7 @@ void apply_preview(const RenderOptions& o, Timeline& tl) {
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
   add_frame_options(cmd, o);
+  add_no_video_option(cmd, o);
   cmd->add_flag("--resume", o.resume,
                 "keep frames on disk whose hashes match the manifest, render the rest");
 }
@@ -71,12 +73,15 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("--quality", o.quality, "draft | final | reference")
       ->check(CLI::IsMember({"draft", "final", "reference"}));
   cmd->add_option("--out", o.out, "output folder, overrides [output] dir");
-  cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
   cmd->add_flag("--preview", o.preview,
                 "a quick look at the whole timeline: --scale 0.25, 1 sample, draft quality, into "
                 "the output folder's name + -preview (other options still override)");
   cmd->add_option("--scale", o.scale, "both sides of the picture times this, e.g. 0.5")
       ->check(CLI::Range(0.001, 16.0));
+}
+
+void add_no_video_option(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
 }
 
 Timeline load_with_overrides(const RenderOptions& o) {
@@ -91,6 +96,7 @@ Timeline load_with_overrides(const RenderOptions& o) {
       throw InputError(tl.path, 0, 0, "--resolution: " + problem);
     tl.width = int(r.width);
     tl.height = int(r.height);
+    tl.resolution_line = tl.resolution_column = 0;
   }
   if (o.samples) {
     tl.samples = o.samples;
@@ -99,7 +105,9 @@ Timeline load_with_overrides(const RenderOptions& o) {
   if (!o.quality.empty()) tl.quality = *parse_quality(o.quality);
   if (!o.out.empty()) tl.out_dir = o.out;
   if (o.no_video) tl.video.clear();
-  validate_overrides(tl);
+  // A render writes its video only when it renders every frame (a part leaves it to encode).
+  const bool whole = selected_frames(tl, o).size() == size_t(tl.frame_count());
+  validate_overrides(tl, whole);
   return tl;
 }
 

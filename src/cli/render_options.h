@@ -27,10 +27,12 @@ struct RenderOptions {
   double scale = 0.0;    // --scale: both sides times this (0: as the timeline says)
 };
 
-// The timeline and what a render of it makes: backend, frames, shard, threads, resolution,
-// samples, quality, out, no-video, preview and scale (render, verify, check).
+// The timeline and how its frames are rendered: backend, frames, shard, threads, resolution,
+// samples, quality, out, preview and scale (render, verify, check).
 void add_frame_options(CLI::App* cmd, RenderOptions& o);
-// add_frame_options and --resume.
+// --no-video (render, check: verify makes no video).
+void add_no_video_option(CLI::App* cmd, RenderOptions& o);
+// add_frame_options, --no-video and --resume.
 void add_render_options(CLI::App* cmd, RenderOptions& o);
 // --backend, --gl-platform, --gl-device.
 void add_backend_options(CLI::App* cmd, RenderOptions& o);

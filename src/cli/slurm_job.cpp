@@ -87,8 +87,10 @@ SlurmJob make_slurm_job(const SlurmOptions& o) {
   if (o.samples)
     job.render_args.insert(job.render_args.end(), {"--samples", std::to_string(o.samples)});
   if (!o.quality.empty()) job.render_args.insert(job.render_args.end(), {"--quality", o.quality});
-  // encode takes the codec from the manifest but not the quality: pass the timeline's.
-  if (tl.codec == "h264") job.encode_args = {"--crf", std::to_string(tl.crf)};
+  // The timeline's codec and quality: encode would take the codec from the container.
+  job.encode_args = {"--codec", tl.codec};
+  if (tl.codec == "h264")
+    job.encode_args.insert(job.encode_args.end(), {"--crf", std::to_string(tl.crf)});
   return job;
 }
 

@@ -12,6 +12,7 @@
 #include "shader/glsl_text.h"
 #include "shader/shadertoy_json.h"
 #include "timeline/timeline.h"
+#include "timeline/toml_errors.h"
 
 namespace sdfreel {
 
@@ -28,7 +29,7 @@ void read_channels_file(const std::string& file, ShaderProject& p) {
     root = toml::parse(std::string_view(text), std::string_view(file));
   } catch (const toml::parse_error& e) {
     throw InputError(file, int(e.source().begin.line), int(e.source().begin.column),
-                     std::string(e.description()));
+                     toml_error_message(std::string(e.description())));
   }
   TomlReader r(file);
   r.check_keys(root, "", {"channels"});

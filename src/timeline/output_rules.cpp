@@ -10,15 +10,16 @@ namespace {
 
 struct Container {
   const char* extension;
+  const char* usual;  // the codec the extension stands for when none is named
   // Our rule, the same on every FFmpeg: pairings libav's muxer accepts (tests/cli checks each
   // against the installed libav; a newer one may accept more).
   const char* codecs[3];
 };
 
 constexpr Container kContainers[] = {
-    {".mp4", {"h264"}},
-    {".mkv", {"h264", "ffv1", "prores"}},
-    {".mov", {"h264", "prores"}},
+    {".mp4", "h264", {"h264"}},
+    {".mkv", "ffv1", {"h264", "ffv1", "prores"}},
+    {".mov", "prores", {"h264", "prores"}},
 };
 
 std::string lower_extension(const std::string& name) {
@@ -38,6 +39,22 @@ std::string check_path_text(const std::string& key, const std::string& text) {
       return key + " contains a control character (code " + std::to_string(int(c)) +
              "); file names cannot hold it";
   return "";
+}
+
+std::string usual_codec(const std::string& name) {
+  const std::string ext = lower_extension(name);
+  for (const Container& c : kContainers)
+    if (ext == c.extension) return c.usual;
+  return "";
+}
+
+bool container_holds(const std::string& name, const std::string& codec) {
+  const std::string ext = lower_extension(name);
+  for (const Container& c : kContainers)
+    if (ext == c.extension)
+      for (const char* fits : c.codecs)
+        if (fits && codec == fits) return true;
+  return false;
 }
 
 std::string check_video_name(const std::string& name, const std::string& codec) {

@@ -10,6 +10,7 @@
 #include "timeline/rules.h"
 #include "timeline/sections.h"
 #include "timeline/sha256.h"
+#include "timeline/toml_errors.h"
 #include "timeline/utf8.h"
 
 namespace sdfreel {
@@ -54,14 +55,8 @@ const toml::node* find(const toml::table& root, const char* table, const char* k
 // Rules that involve more than one key, checked after every table has been read.
 void check_across_tables(const TomlReader& r, const toml::table& root, const Timeline& tl,
                          const ColorChecker* color) {
-  // yuv420p needs even sizes, but only when a video is made (or the codec is asked for).
-  const toml::node* codec = find(root, "output", "codec");
-  if (!tl.video.empty() || codec) {
-    if (std::string problem = check_codec_size(tl.codec, tl.width, tl.height); !problem.empty()) {
-      const toml::node* at = find(root, "video", "resolution");
-      r.fail(at ? at->source() : codec ? codec->source() : toml::source_region{}, problem);
-    }
-  }
+  // h264's even sizes are checked when a video is made (validate_overrides): --no-video, still,
+  // sheet and a partial frame range take any size.
   // A display-referred shader's display pixels are its PNG's: its EXR (their sRGB decoding, in
   // half floats) does not give them back bit for bit, so resume, encode and verify need the PNG.
   if (tl.shader_scene && tl.shader_scene->display_referred && !tl.write_png) {
@@ -139,7 +134,8 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
     root = toml::parse(std::string_view(text), std::string_view(path));
   } catch (const toml::parse_error& e) {
     const toml::source_position where = e.source().begin;
-    throw InputError(path, int(where.line), int(where.column), std::string(e.description()));
+    throw InputError(path, int(where.line), int(where.column),
+                     toml_error_message(std::string(e.description())));
   }
 
   TomlReader r(path);

@@ -143,6 +143,8 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
     if (std::string problem = check_resolution(w, h); !problem.empty()) r.fail(*n, problem);
     tl.width = int(w);
     tl.height = int(h);
+    tl.resolution_line = int(n->source().begin.line);
+    tl.resolution_column = int(n->source().begin.column);
   }
   if (tl.shader_scene) tl.samples = 1;  // Shadertoy's one sample a pixel, unless asked
   if (const toml::node* n = video->get("samples")) {

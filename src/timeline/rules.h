@@ -15,6 +15,11 @@ std::string check_samples(int64_t samples);
 std::string check_codec_size(const std::string& codec, int64_t width, int64_t height);
 // output.video: a plain file name whose container (.mp4, .mkv or .mov) can hold `codec`.
 std::string check_video_name(const std::string& name, const std::string& codec);
+// The codec a video file's container stands for when none is named: .mp4 h264, .mkv ffv1, .mov
+// prores (sdfreel's pairings); "" for any other extension.
+std::string usual_codec(const std::string& name);
+// Whether that container can hold `codec` (check_video_name's table).
+bool container_holds(const std::string& name, const std::string& codec);
 // A path or name from the timeline: no NUL or other control characters (the file system would cut
 // the name at a NUL and write somewhere else).
 std::string check_path_text(const std::string& key, const std::string& text);

@@ -55,14 +55,13 @@ std::string check_codec_size(const std::string& codec, int64_t width, int64_t he
          std::to_string(even(width)) + "x" + std::to_string(even(height));
 }
 
-void validate_overrides(const Timeline& tl) {
-  // The codec's size rule matters only when a video is written (--no-video clears tl.video).
-  const std::string codec_problem =
-      tl.video.empty() ? "" : check_codec_size(tl.codec, tl.width, tl.height);
+void validate_overrides(const Timeline& tl, bool makes_video) {
   for (const std::string& problem :
-       {check_resolution(tl.width, tl.height), check_samples(tl.samples), codec_problem}) {
+       {check_resolution(tl.width, tl.height), check_samples(tl.samples)})
     if (!problem.empty()) throw InputError(tl.path, 0, 0, problem);
-  }
+  if (!makes_video || tl.video.empty()) return;
+  if (std::string problem = check_codec_size(tl.codec, tl.width, tl.height); !problem.empty())
+    throw InputError(tl.path, tl.resolution_line, tl.resolution_column, problem);
 }
 
 }  // namespace sdfreel

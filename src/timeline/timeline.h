@@ -68,6 +68,9 @@ struct Timeline {
   Rational fps;
   double duration = 10.0;
   int width = 1280, height = 720;
+  // Where [video] resolution stands in the file (0: not there, or overridden): h264's even-size
+  // rule is checked only when a video is made (validate_overrides), and points here.
+  int resolution_line = 0, resolution_column = 0;
   int samples = 4;
   AdaptiveSampling adaptive;  // enabled: per-pixel adaptive sampling instead of `samples`
   Quality quality = Quality::Final;
@@ -115,8 +118,9 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
                         const std::string& text, const ColorChecker* color,
                         const ShaderLoader* shaders = nullptr);
 
-// Validates a timeline after command-line overrides (resolution, samples, codec size rules).
-// Throws InputError with the timeline path (line/column 0).
-void validate_overrides(const Timeline& tl);
+// Validates a timeline after command-line overrides: resolution, samples and, when `makes_video`,
+// the codec's size rule (h264's even sides; no other output has one). Throws InputError with the
+// timeline path (and [video] resolution's place for the size rule, when the size is the file's).
+void validate_overrides(const Timeline& tl, bool makes_video);
 
 }  // namespace sdfreel

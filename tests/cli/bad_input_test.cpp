@@ -91,5 +91,60 @@ TEST(BadInput, UnknownCommandLineOptionsExitTwo) {
       << r.err;
 }
 
+// h264's even sides matter only where a video is made: --no-video, a partial range and a still
+// take an odd size; the render that would write the video refuses, pointing at the resolution.
+TEST(BadInput, OddSizeIsRefusedExactlyWhenAVideoIsMade) {
+  const std::string dir = scratch_dir("odd-size");
+  write_file(dir + "/t.toml", replace(small_timeline(3, "h264", "v.mp4"), "[64, 36]", "[63, 36]"));
+  const RunResult whole = run_sdfreel("render t.toml", dir);
+  EXPECT_EQ(whole.status, 2);
+  EXPECT_NE(whole.err.find("t.toml:5:14: error: resolution 63x36 has an odd side"),
+            std::string::npos)
+      << whole.err;
+  EXPECT_EQ(run_sdfreel("check t.toml", dir).status, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out"));
+  for (const char* ok : {"render t.toml --no-video --out a", "render t.toml --frames 0-1 --out b",
+                         "still t.toml --time 0 -o s.png", "check t.toml --no-video"}) {
+    const RunResult r = run_sdfreel(ok, dir);
+    EXPECT_EQ(r.status, 0) << ok << ": " << r.err;
+  }
+  // A size from the command line is held to the same rule, without a place in the file.
+  const RunResult opt = run_sdfreel("render t.toml --resolution 65x36", dir);
+  EXPECT_EQ(opt.status, 2);
+  EXPECT_NE(opt.err.find("t.toml: error: resolution 65x36 has an odd side"), std::string::npos)
+      << opt.err;
+}
+
+// Mistakes whose first answers were a library's words: each now says what to do, exit 2.
+TEST(BadInput, CommonMistakesGetAnAnswerThatSaysWhatToDo) {
+  const std::string dir = scratch_dir("mistakes");
+  write_file(dir + "/t.toml", small_timeline(3));
+  write_file(dir + "/afile", "not a folder");
+  for (const char* cmd : {"render t.toml --out afile", "render t.toml --out afile/inner",
+                          "check t.toml --out afile"}) {
+    const RunResult r = run_sdfreel(cmd, dir);
+    EXPECT_EQ(r.status, 2) << cmd;
+    EXPECT_NE(r.err.find("is a file, not a folder; choose another folder with --out"),
+              std::string::npos)
+        << cmd << ": " << r.err;
+  }
+  EXPECT_EQ(read_file(dir + "/afile"), "not a folder");
+
+  const RunResult frames = run_sdfreel("still t.toml --frames 0 -o x.png", dir);
+  EXPECT_EQ(frames.status, 2);
+  EXPECT_NE(frames.err.find("use `sdfreel render TIMELINE --frames 0`"), std::string::npos)
+      << frames.err;
+  const RunResult no_time = run_sdfreel("still t.toml -o x.png", dir);
+  EXPECT_EQ(no_time.status, 2);
+  EXPECT_NE(no_time.err.find("--time SECONDS is required"), std::string::npos) << no_time.err;
+
+  write_file(dir + "/open.toml", "[video]\nscene = \"sdf_morph\nfps = 10\n");
+  const RunResult open = run_sdfreel("check open.toml", dir);
+  EXPECT_EQ(open.status, 2);
+  EXPECT_NE(open.err.find("open.toml:2:19: error: a string is not closed"), std::string::npos)
+      << open.err;
+  EXPECT_FALSE(fs::exists(dir + "/x.png"));
+}
+
 }  // namespace
 }  // namespace sdfreel::test

@@ -72,7 +72,9 @@ TEST(Slurm, DryRunPrintsTheArrayAndEncodeScriptsAndWritesNothing) {
   const std::string& encode = s.at(out + "/slurm/encode.sh");
   EXPECT_TRUE(contains(encode, "#SBATCH --output=" + out + "/logs/encode.log\n")) << encode;
   EXPECT_TRUE(contains(encode, "#SBATCH --partition=render\n")) << encode;
-  EXPECT_TRUE(contains(encode, "encode '" + out + "' -o '" + out + "/small.mkv'\n")) << encode;
+  EXPECT_TRUE(
+      contains(encode, "encode '" + out + "' -o '" + out + "/small.mkv' '--codec' 'ffv1'\n"))
+      << encode;
   EXPECT_FALSE(contains(encode, "--array")) << encode;
 
   EXPECT_EQ(s.at("submit with"), "sbatch --parsable " + out +

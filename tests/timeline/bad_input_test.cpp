@@ -13,8 +13,10 @@ class BadInput : public testing::TimelineFiles {};
 
 TEST_F(BadInput, TomlSyntaxError) {
   expect_error(video_with("fps = = 30"), "", 3, 7);
-  expect_error("[video]\nscene = \"sdf_morph\n", "", 2,
-               19);  // unterminated string, at the line end
+  // An unterminated string, at the line end and at the end of the file: say what to add.
+  expect_error("[video]\nscene = \"sdf_morph\n",
+               "a string is not closed: add the missing closing quote", 2, 19);
+  expect_error("[video]\nscene = \"sdf_morph", "a string is not closed", 2, 19);
 }
 
 TEST_F(BadInput, UnknownTableSuggestsTheClosest) {
@@ -188,15 +190,31 @@ TEST_F(BadInput, UnknownDisplayOrView) {
       load_timeline(all_scenes(), write(video_with("[color]\ndisplay = \"P3\"")), nullptr));
 }
 
+// The file parses (a still or --no-video takes any size); the render that makes the video refuses,
+// pointing at [video] resolution.
 TEST_F(BadInput, OddSizeWithH264NamesTheNearestEvenSize) {
-  expect_error(video_with("resolution = [63, 35]\n[output]\nvideo = \"a.mp4\""),
-               "codec h264 (yuv420p) needs an even width and height: use 64x36", 3, 14);
-  expect_error(video_with("resolution = [64, 35]\n[output]\ncodec = \"h264\""), "use 64x36", 3, 14);
+  const Timeline tl = load_timeline(
+      all_scenes(), write(video_with("resolution = [63, 35]\n[output]\nvideo = \"a.mp4\"")),
+      nullptr);
+  try {
+    validate_overrides(tl, true);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "codec h264 (yuv420p) needs an even width and height: use 64x36"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.line, 3);
+    EXPECT_EQ(e.column, 14);
+  }
+  EXPECT_NO_THROW(validate_overrides(tl, false));
   // Other codecs take odd sizes.
-  EXPECT_NO_THROW(load_timeline(
-      all_scenes(),
-      write(video_with("resolution = [63, 35]\n[output]\nvideo = \"a.mkv\"\ncodec = \"ffv1\"")),
-      nullptr));
+  EXPECT_NO_THROW(validate_overrides(
+      load_timeline(
+          all_scenes(),
+          write(video_with("resolution = [63, 35]\n[output]\nvideo = \"a.mkv\"\ncodec = \"ffv1\"")),
+          nullptr),
+      true));
 }
 
 TEST_F(BadInput, SamplesRange) {

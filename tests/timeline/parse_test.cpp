@@ -229,7 +229,7 @@ keys = [[0, 5], [1, 5], [2, 3]]
 TEST_F(Parse, OddSizeIsFineWithoutVideo) {
   Timeline tl = load_timeline(all_scenes(), write(video_with("resolution = [63, 35]")), nullptr);
   EXPECT_EQ(tl.width, 63);
-  EXPECT_NO_THROW(validate_overrides(tl));
+  EXPECT_NO_THROW(validate_overrides(tl, true));
 }
 
 }  // namespace

@@ -58,7 +58,7 @@ Timeline overridden(int w, int h, int samples, const std::string& video) {
 
 void expect_override_error(const Timeline& tl, const std::string& message) {
   try {
-    validate_overrides(tl);
+    validate_overrides(tl, true);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file, "show.toml");
@@ -69,17 +69,32 @@ void expect_override_error(const Timeline& tl, const std::string& message) {
 }
 
 TEST(ValidateOverrides, ChecksResolutionSamplesAndEvenSizes) {
-  EXPECT_NO_THROW(validate_overrides(overridden(64, 36, 4, "a.mp4")));
+  EXPECT_NO_THROW(validate_overrides(overridden(64, 36, 4, "a.mp4"), true));
   expect_override_error(overridden(0, 36, 4, ""), "resolution 0x36 is outside 1..16384");
   expect_override_error(overridden(64, 20000, 4, ""), "is outside 1..16384");
   expect_override_error(overridden(64, 36, 0, ""), "samples 0 is outside 1..1024");
   expect_override_error(overridden(64, 36, 2000, ""), "samples 2000 is outside 1..1024");
   expect_override_error(overridden(63, 35, 4, "a.mp4"), "use 64x36");
-  // No video (e.g. --no-video): odd sizes are fine; so are other codecs.
-  EXPECT_NO_THROW(validate_overrides(overridden(63, 35, 4, "")));
+  // No video (--no-video, a still, a partial range): odd sizes are fine; so are other codecs.
+  EXPECT_NO_THROW(validate_overrides(overridden(63, 35, 4, ""), true));
+  EXPECT_NO_THROW(validate_overrides(overridden(63, 35, 4, "a.mp4"), false));
   Timeline ffv1 = overridden(63, 35, 4, "a.mkv");
   ffv1.codec = "ffv1";
-  EXPECT_NO_THROW(validate_overrides(ffv1));
+  EXPECT_NO_THROW(validate_overrides(ffv1, true));
+}
+
+// The size rule points at [video] resolution when the size is the file's.
+TEST(ValidateOverrides, TheSizeRuleNamesTheResolutionsPlace) {
+  Timeline tl = overridden(63, 35, 4, "a.mp4");
+  tl.resolution_line = 6;
+  tl.resolution_column = 14;
+  try {
+    validate_overrides(tl, true);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line, 6);
+    EXPECT_EQ(e.column, 14);
+  }
 }
 
 }  // namespace
