@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands_impl.h"
+#include "cli/interrupt_guard.h"
 #include "cli/output_folder.h"
 #include "cli/progress.h"
 #include "io/atomic_file.h"
@@ -100,8 +101,12 @@ int run_render(const RenderOptions& o) {
   // Files, journal lines, video frames and progress lines go through one writer thread, in frame
   // order, while the next frame renders. Only that thread writes until finish().
   FrameWriter writer;
+  InterruptGuard interrupts;
+  size_t queued = 0;  // frames handed to the writer, kept or rendered
   try {
     for (int i : frames) {
+      if (InterruptGuard::signal_seen()) break;  // the frames queued so far are still written
+      ++queued;
       if (previous) {
         auto it = previous->frames.find(i);
         if (it != previous->frames.end()) {
@@ -137,6 +142,14 @@ int run_render(const RenderOptions& o) {
   }
   progress.finish();
   consolidate_manifest(dir, header);
+  if (const int signo = InterruptGuard::signal_seen(); signo && queued < frames.size()) {
+    encoder.reset();  // a video needs every frame: its temporary file goes
+    std::fprintf(stderr,
+                 "sdfreel: stopped by %s: %zu of %zu frames are finished in %s and listed in its "
+                 "manifest; the same command with --resume renders the other %zu\n",
+                 signal_name(signo), queued, frames.size(), dir.c_str(), frames.size() - queued);
+    return 128 + signo;
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const char* no_video = tl.video.empty() ? (o.no_video ? "no video (--no-video)" : "no video")
