@@ -20,6 +20,7 @@ std::string frame_path(const std::string& dir, int index, const std::string& ext
 ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
   ManifestHeader h;
   h.timeline_sha256 = tl.sha256;
+  h.timeline_parsed_sha256 = tl.parsed_sha256;
   h.timeline_path = tl.path;
   h.scene = tl.scene;
   h.backend = backend.name();

@@ -20,11 +20,11 @@ namespace sdfreel {
 using nlohmann::json;
 
 bool ManifestHeader::same_render_as(const ManifestHeader& o) const {
-  return timeline_sha256 == o.timeline_sha256 && scene == o.scene && backend == o.backend &&
-         versions == o.versions && width == o.width && height == o.height && fps_num == o.fps_num &&
-         fps_den == o.fps_den && frame_count == o.frame_count && samples == o.samples &&
-         adaptive == o.adaptive && quality == o.quality && color_config == o.color_config &&
-         display == o.display && view == o.view;
+  return timeline_parsed_sha256 == o.timeline_parsed_sha256 && scene == o.scene &&
+         backend == o.backend && versions == o.versions && width == o.width && height == o.height &&
+         fps_num == o.fps_num && fps_den == o.fps_den && frame_count == o.frame_count &&
+         samples == o.samples && adaptive == o.adaptive && quality == o.quality &&
+         color_config == o.color_config && display == o.display && view == o.view;
 }
 
 json manifest_frame_json(const ManifestFrame& f) {
@@ -82,7 +82,9 @@ std::string manifest_to_json(const Manifest& m) {
   const ManifestHeader& h = m.header;
   json j;
   j["format"] = "sdfreel-manifest-1";
-  j["timeline"] = {{"path", h.timeline_path}, {"sha256", h.timeline_sha256}};
+  j["timeline"] = {{"path", h.timeline_path},
+                   {"sha256", h.timeline_sha256},
+                   {"parsed_sha256", h.timeline_parsed_sha256}};
   j["scene"] = h.scene;
   j["backend"] = h.backend;
   j["versions"] = h.versions;
@@ -110,6 +112,8 @@ Manifest manifest_from_json(const std::string& text) {
     ManifestHeader& h = m.header;
     h.timeline_path = j.at("timeline").at("path");
     h.timeline_sha256 = j.at("timeline").at("sha256");
+    // Older manifests lack it: their renders count as other settings (rendered again).
+    h.timeline_parsed_sha256 = j.at("timeline").value("parsed_sha256", "");
     h.scene = j.at("scene");
     h.backend = j.at("backend");
     h.versions = j.at("versions").get<std::map<std::string, std::string>>();

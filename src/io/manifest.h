@@ -25,7 +25,8 @@ struct ManifestFrame {
 
 // Everything that must agree for two renders' frames to be interchangeable (resume, shards).
 struct ManifestHeader {
-  std::string timeline_sha256;
+  std::string timeline_sha256;         // of the file's bytes (reported)
+  std::string timeline_parsed_sha256;  // of the parsed timeline (compared): Timeline::parsed_sha256
   std::string timeline_path;
   std::string scene;
   std::string backend;

@@ -22,7 +22,7 @@ struct Differences {
 
 std::vector<std::string> header_differences(const ManifestHeader& a, const ManifestHeader& b) {
   Differences d;
-  d.check("timeline_sha256", a.timeline_sha256, b.timeline_sha256);
+  d.check("timeline (parsed, sha256)", a.timeline_parsed_sha256, b.timeline_parsed_sha256);
   d.check("scene", a.scene, b.scene);
   d.check("backend", a.backend, b.backend);
   std::set<std::string> keys;

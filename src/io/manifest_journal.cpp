@@ -19,9 +19,20 @@ namespace sdfreel {
 using nlohmann::json;
 
 std::string render_key(const ManifestHeader& h) {
-  json identity = {h.timeline_sha256, h.scene,        h.backend, h.versions,    h.width,
-                   h.height,          h.fps_num,      h.fps_den, h.frame_count, h.samples,
-                   h.quality,         h.color_config, h.display, h.view};
+  json identity = {h.timeline_parsed_sha256,
+                   h.scene,
+                   h.backend,
+                   h.versions,
+                   h.width,
+                   h.height,
+                   h.fps_num,
+                   h.fps_den,
+                   h.frame_count,
+                   h.samples,
+                   h.quality,
+                   h.color_config,
+                   h.display,
+                   h.view};
   if (!h.adaptive.empty()) identity.push_back(h.adaptive);  // older keys stay as they were
   return sha256_hex(identity.dump()).substr(0, 32);
 }

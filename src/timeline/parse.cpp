@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <sstream>
 
 #include "timeline/rules.h"
 #include "timeline/sections.h"
@@ -137,6 +138,10 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
     throw InputError(path, int(where.line), int(where.column),
                      toml_error_message(std::string(e.description())));
   }
+
+  std::ostringstream canonical;
+  canonical << toml::toml_formatter{root};
+  tl.parsed_sha256 = sha256_hex(canonical.str());
 
   TomlReader r(path);
   check_top_level_keys(r, root);

@@ -59,6 +59,10 @@ struct ParamTrack {
 struct Timeline {
   std::string path;    // as given on the command line
   std::string sha256;  // of the file's bytes, lowercase hex
+  // Of the parsed table written out canonically (toml++'s formatter: keys sorted, no comments,
+  // one layout): what resume, shards and verify compare, so that a comment, whitespace or the
+  // order of keys does not make a render's frames foreign.
+  std::string parsed_sha256;
 
   // [video]
   std::string scene;   // a built-in scene's name, or "shader:PATH" for a user's shader

@@ -108,6 +108,31 @@ TEST(Render, ResumeAfterPartialRenderEqualsFullRender) {
   EXPECT_EQ(read_file(part + "/out/small.mkv"), read_file(full + "/out/small.mkv"));
 }
 
+// A comment, whitespace or key order changes no pixel: resume keeps the frames and verify passes;
+// a changed value makes them foreign. The manifest keeps both hashes.
+TEST(Render, EditsThatChangeNoPixelKeepTheFrames) {
+  const std::string dir = scratch_dir("render-parsed-hash");
+  const std::string timeline = small_timeline(3);
+  write_file(dir + "/t.toml", timeline);
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  write_file(dir + "/t.toml", "# the same render, written otherwise\n" + timeline + "\n\n");
+  const RunResult resumed = run_sdfreel("render t.toml --no-video --resume", dir);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("(0 rendered, 3 kept from before)"), std::string::npos) << resumed.err;
+  const RunResult verified = run_sdfreel("verify t.toml --manifest out/manifest.json", dir);
+  EXPECT_EQ(verified.status, 0) << verified.err;
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  EXPECT_EQ(m["timeline"]["sha256"].get<std::string>().size(), 64u);
+  EXPECT_EQ(m["timeline"]["parsed_sha256"].get<std::string>().size(), 64u);
+
+  std::string changed = timeline;
+  changed.replace(changed.find("morph_period = 2.0"), 18, "morph_period = 2.5");
+  write_file(dir + "/t.toml", changed);
+  const RunResult again = run_sdfreel("render t.toml --no-video --resume", dir);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.err.find("(3 rendered, 0 kept from before)"), std::string::npos) << again.err;
+}
+
 TEST(Render, ShardsThenEncodeEqualOneRender) {
   const std::string full = scratch_dir("render-one");
   write_file(full + "/t.toml", small_timeline(5));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "draw/bitmap_font.h"
+#include "support/solid_image.h"
 
 namespace sdfreel::draw {
 namespace {
@@ -26,22 +27,12 @@ TEST(EvenlySpaced, TakesFirstAndLastAndSpreadsTheRest) {
   EXPECT_EQ(picks.back(), 12);
 }
 
-ImageRGB16 solid(int w, int h, uint16_t r, uint16_t g, uint16_t b) {
-  ImageRGB16 img(w, h);
-  for (size_t i = 0; i < img.pixels.size(); i += 3) {
-    img.pixels[i] = r;
-    img.pixels[i + 1] = g;
-    img.pixels[i + 2] = b;
-  }
-  return img;
-}
-
 // Three 120x20 tiles in rows of two: red and green on the first row, blue under red, each with
 // its label inked just below it.
 TEST(ContactSheet, PlacesTilesInRowsWithTheirLabels) {
-  const std::vector<SheetTile> tiles = {{solid(120, 20, 65535, 0, 0), "one"},
-                                        {solid(120, 20, 0, 65535, 0), "two"},
-                                        {solid(120, 20, 0, 0, 65535), "three"}};
+  const std::vector<SheetTile> tiles = {{test::solid_frame(120, 20, 65535, 0, 0), "one"},
+                                        {test::solid_frame(120, 20, 0, 65535, 0), "two"},
+                                        {test::solid_frame(120, 20, 0, 0, 65535), "three"}};
   const Canvas sheet = contact_sheet(tiles, 2, "title");
   const int gap = 8, top = gap + GLYPH_HEIGHT + gap, cell_h = 20 + GLYPH_HEIGHT + 4;
   EXPECT_EQ(sheet.width(), gap + 2 * (120 + gap));
@@ -64,7 +55,7 @@ TEST(ContactSheet, PlacesTilesInRowsWithTheirLabels) {
 
 TEST(ContactSheet, AColumnIsAsWideAsItsLongestLabel) {
   const std::string label = "frame 120  5.00 s";
-  const Canvas sheet = contact_sheet({{solid(16, 9, 0, 0, 0), label}}, 4, "t");
+  const Canvas sheet = contact_sheet({{test::solid_frame(16, 9, 0, 0, 0), label}}, 4, "t");
   EXPECT_EQ(sheet.width(), 8 + Canvas::text_width(label) + 8);
 }
 

@@ -9,6 +9,7 @@ namespace {
 ManifestHeader header() {
   ManifestHeader h;
   h.timeline_sha256 = "abc";
+  h.timeline_parsed_sha256 = "def";
   h.scene = "sdf_morph";
   h.backend = "egl";
   h.versions = {{"egl.mesa", "25.0.7"}, {"openexr", "3.1.5"}};

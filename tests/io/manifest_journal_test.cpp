@@ -31,6 +31,7 @@ struct Folder {
 ManifestHeader header(int frames) {
   ManifestHeader h;
   h.timeline_sha256 = std::string(64, 'a');
+  h.timeline_parsed_sha256 = std::string(64, 'd');
   h.scene = "sdf_morph";
   h.backend = "cpu";
   h.width = 64;

@@ -11,6 +11,7 @@
 
 #include "io/video_encoder.h"
 #include "render/image.h"
+#include "support/solid_image.h"
 
 namespace sdfreel::test {
 
@@ -24,16 +25,6 @@ inline ImageRGB16 gradient_frame(int w, int h, int index) {
       p[1] = uint16_t((y * 65535) / (h - 1) + index * 4099);
       p[2] = uint16_t(x * 1021 + y * 7919 + index * 31337);
     }
-  return img;
-}
-
-inline ImageRGB16 solid_frame(int w, int h, uint16_t r, uint16_t g, uint16_t b) {
-  ImageRGB16 img(w, h);
-  for (size_t i = 0; i < img.pixels.size(); i += 3) {
-    img.pixels[i] = r;
-    img.pixels[i + 1] = g;
-    img.pixels[i + 2] = b;
-  }
   return img;
 }
 

@@ -232,5 +232,20 @@ TEST_F(Parse, OddSizeIsFineWithoutVideo) {
   EXPECT_NO_THROW(validate_overrides(tl, true));
 }
 
+// What resume, shards and verify compare: the parsed timeline, not its bytes.
+TEST_F(Parse, ParsedHashIgnoresCommentsWhitespaceAndKeyOrderButNotValues) {
+  const std::string a = "[video]\nscene = \"sdf_morph\"\nfps = 10\nduration = 1.0\n";
+  const std::string b =
+      "# a comment\n[video]\n  duration   =   1.0   # seconds\n\nfps = 10\nscene = \"sdf_morph\"\n";
+  const std::string c = "[video]\nscene = \"sdf_morph\"\nfps = 10\nduration = 1.5\n";
+  const Timeline ta = load_timeline(all_scenes(), write(a), nullptr);
+  const Timeline tb = load_timeline(all_scenes(), write(b), nullptr);
+  const Timeline tc = load_timeline(all_scenes(), write(c), nullptr);
+  EXPECT_NE(ta.sha256, tb.sha256);
+  EXPECT_EQ(ta.parsed_sha256, tb.parsed_sha256);
+  EXPECT_NE(ta.parsed_sha256, tc.parsed_sha256);
+  EXPECT_EQ(ta.parsed_sha256.size(), 64u);
+}
+
 }  // namespace
 }  // namespace sdfreel
