@@ -39,6 +39,27 @@ void publish_frame(const std::string& dir, const Timeline& tl, const ManifestHea
   }
 }
 
+// The render of other settings a folder holds (its manifest's frames and video) goes before this
+// one starts: otherwise its frames beyond this range and its video would stay beside the new ones,
+// looking current. Called under the folder lock, when no render of it is running.
+void remove_foreign_render(const std::string& dir) {
+  std::optional<Manifest> old;
+  try {
+    old = read_manifest_json(dir + "/manifest.json");
+  } catch (const std::exception&) {
+    return;  // damaged: set aside by consolidate_manifest, nothing to go by
+  }
+  if (!old) return;
+  std::error_code ec;
+  size_t removed = 0;
+  for (const auto& [i, f] : old->frames)
+    for (const char* ext : {"exr", "png"}) removed += fs::remove(frame_path(dir, i, ext), ec);
+  const bool video = !old->header.video.empty() && fs::remove(dir + "/" + old->header.video, ec);
+  std::fprintf(stderr,
+               "note: %s held a render of other settings; its %zu frame files%s%s were removed\n",
+               dir.c_str(), removed, video ? " and " : "", video ? old->header.video.c_str() : "");
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& o) {
@@ -69,6 +90,7 @@ int run_render(const RenderOptions& o) {
                        "resolution, samples, quality or colour): refusing to mix the two renders; "
                        "use another --out or wait for it to finish");
     claim.acquire(dir);
+    if (foreign) remove_foreign_render(dir);
   });
   if (!damaged.empty())
     std::fprintf(stderr, "note: %s/manifest.json is damaged (%s); it was set aside\n", dir.c_str(),

@@ -133,6 +133,33 @@ TEST(Render, EditsThatChangeNoPixelKeepTheFrames) {
   EXPECT_NE(again.err.find("(3 rendered, 0 kept from before)"), std::string::npos) << again.err;
 }
 
+// A render of other settings into a finished folder replaces the old render whole: its frames
+// beyond the new range and its video go, so nothing stale looks current.
+TEST(Render, ARenderOfOtherSettingsReplacesTheOldOneInItsFolder) {
+  const std::string dir = scratch_dir("render-replace");
+  write_file(dir + "/a.toml", small_timeline(6));
+  ASSERT_EQ(run_sdfreel("render a.toml --out out", dir).status, 0);
+  ASSERT_TRUE(fs::exists(dir + "/out/small.mkv"));
+  std::string other = small_timeline(3, "ffv1", "b.mkv");
+  other.replace(other.find("morph_period = 2.0"), 18, "morph_period = 3.0");
+  write_file(dir + "/b.toml", other);
+  const RunResult r = run_sdfreel("render b.toml --out out --no-video", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("held a render of other settings; its 12 frame files and small.mkv were "
+                       "removed"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/small.mkv"));
+  for (const char* gone : {"00003.png", "00005.exr"})
+    EXPECT_FALSE(fs::exists(dir + "/out/frames/" + std::string(gone))) << gone;
+  EXPECT_TRUE(fs::exists(dir + "/out/frames/00002.png"));
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  EXPECT_EQ(m.at("frames").size(), 3u);
+  // The same settings again: nothing is removed.
+  const RunResult same = run_sdfreel("render b.toml --out out --no-video --resume", dir);
+  EXPECT_EQ(same.err.find("held a render"), std::string::npos) << same.err;
+}
+
 TEST(Render, ShardsThenEncodeEqualOneRender) {
   const std::string full = scratch_dir("render-one");
   write_file(full + "/t.toml", small_timeline(5));
