@@ -146,5 +146,24 @@ TEST(BadInput, CommonMistakesGetAnAnswerThatSaysWhatToDo) {
   EXPECT_FALSE(fs::exists(dir + "/x.png"));
 }
 
+// A frame too large for the memory this process may have is refused before anything is written,
+// with both sizes (it was std::bad_alloc, exit 1, after the render had started).
+TEST(BadInput, AFrameLargerThanTheMemoryIsRefusedWithTheSizeItNeeds) {
+  const std::string dir = scratch_dir("too-big");
+  write_file(dir + "/t.toml", small_timeline(2));
+  for (const char* cmd : {"render t.toml --resolution 16384x16384",
+                          "still t.toml --time 0 --resolution 16384x16384 -o big.png",
+                          "check t.toml --resolution 16384x16384"}) {
+    const RunResult r = run("ulimit -v 3000000; '" + sdfreel_binary() + "' " + cmd, dir);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.err;
+    EXPECT_NE(r.err.find("a 16384x16384 frame needs at least 9.0 GiB (its images alone), and "
+                         "this process may have 2.9 GiB (ulimit -v)"),
+              std::string::npos)
+        << cmd << ": " << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/big.png"));
+}
+
 }  // namespace
 }  // namespace sdfreel::test
