@@ -6,6 +6,7 @@
 #include "cli/camera_path_stats.h"
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
+#include "pipeline/frame_memory.h"
 #include "render/adaptive_sampling.h"
 #include "render/quality.h"
 #include "scenes/registry.h"
@@ -49,6 +50,7 @@ void print_output(const Timeline& tl, const std::vector<int>& frames) {
 int run_check(const RenderOptions& o) {
   const Timeline tl = load_with_overrides(o);
   check_output_folder(tl.out_dir);
+  check_frame_memory(tl);  // render's pipeline checks it; check makes none for a built-in scene
   const std::vector<int> frames = selected_frames(tl, o);
   const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");

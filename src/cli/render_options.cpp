@@ -11,7 +11,6 @@
 #ifdef SDFREEL_HAVE_GL
 #include "backends/gl/gl_backend.h"
 #endif
-#include "cli/frame_memory.h"
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
 #include "io/color.h"
@@ -109,7 +108,6 @@ Timeline load_with_overrides(const RenderOptions& o) {
   // A render writes its video only when it renders every frame (a part leaves it to encode).
   const bool whole = selected_frames(tl, o).size() == size_t(tl.frame_count());
   validate_overrides(tl, whole);
-  check_frame_memory(tl);
   return tl;
 }
 

@@ -7,6 +7,7 @@
 #include "io/half_image.h"
 #include "io/hashing.h"
 #include "pipeline/errors.h"
+#include "pipeline/frame_memory.h"
 #include "scenes/registry.h"
 #include "shader/shader_project.h"
 
@@ -45,6 +46,7 @@ FramePipeline::FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backen
       backend_(std::move(backend)),
       display_(tl.color_config, tl.display, tl.view) {
   if (!scene_) throw UsageError("unknown scene '" + tl.scene + "'");
+  check_frame_memory(tl);  // before the backend allocates anything of the frame's size
   // Before begin: a shader with feedback replays earlier frames while it starts.
   backend_->set_frame_source([this](int i) { return frame_context(tl_, *scene_, i); });
   backend_->begin(*scene_);

@@ -163,6 +163,14 @@ TEST(BadInput, AFrameLargerThanTheMemoryIsRefusedWithTheSizeItNeeds) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir + "/out"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/big.png"));
+  // Where no frame of that size is made here, nothing is refused: a sheet's tiles are small, and
+  // slurm's frames are rendered on the nodes, not on the submit host.
+  write_file(dir + "/big.toml", replace(small_timeline(2), "[64, 36]", "[16384, 16384]"));
+  for (const char* cmd : {"sheet big.toml -o sheet.png --count 2 --tile-width 32",
+                          "slurm big.toml --tasks 2 --dry-run"}) {
+    const RunResult r = run("ulimit -v 3000000; '" + sdfreel_binary() + "' " + cmd, dir);
+    EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
+  }
 }
 
 }  // namespace

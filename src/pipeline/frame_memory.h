@@ -1,6 +1,9 @@
 #pragma once
-// Memory for a frame, checked before anything is written: a 16384x16384 render where the process
-// may not have the memory ended in std::bad_alloc (exit 1) after it had started.
+// Memory for a frame, checked where a frame pipeline is made (and by check), before anything is
+// written: a 16384x16384 render where the process may not have the memory ended in
+// std::bad_alloc (exit 1) after it had started. Not at load time: `slurm` loads a timeline on the
+// submit host, whose memory is not the nodes', and `sheet` renders tiles smaller than the
+// timeline's size.
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -1,10 +1,9 @@
-#include "cli/frame_memory.h"
+#include "pipeline/frame_memory.h"
 
 #include <sys/resource.h>
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include "pipeline/errors.h"
 
