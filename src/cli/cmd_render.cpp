@@ -42,22 +42,16 @@ void publish_frame(const std::string& dir, const Timeline& tl, const ManifestHea
 // The render of other settings a folder holds (its manifest's frames and video) goes before this
 // one starts: otherwise its frames beyond this range and its video would stay beside the new ones,
 // looking current. Called under the folder lock, when no render of it is running.
-void remove_foreign_render(const std::string& dir) {
-  std::optional<Manifest> old;
-  try {
-    old = read_manifest_json(dir + "/manifest.json");
-  } catch (const std::exception&) {
-    return;  // damaged: set aside by consolidate_manifest, nothing to go by
-  }
-  if (!old) return;
+void remove_foreign_render(const std::string& dir, const Manifest& old) {
   std::error_code ec;
   size_t removed = 0;
-  for (const auto& [i, f] : old->frames)
+  for (const auto& [i, f] : old.frames)
     for (const char* ext : {"exr", "png"}) removed += fs::remove(frame_path(dir, i, ext), ec);
-  const bool video = !old->header.video.empty() && fs::remove(dir + "/" + old->header.video, ec);
+  const std::string& video = old.header.video;
+  const bool had_video = !video.empty() && fs::remove(dir + "/" + video, ec);
   std::fprintf(stderr,
                "note: %s held a render of other settings; its %zu frame files%s%s were removed\n",
-               dir.c_str(), removed, video ? " and " : "", video ? old->header.video.c_str() : "");
+               dir.c_str(), removed, had_video ? " and " : "", had_video ? video.c_str() : "");
 }
 
 }  // namespace
@@ -81,17 +75,19 @@ int run_render(const RenderOptions& o) {
   FolderClaim claim;
   bool foreign = false;
   std::string damaged;
-  const Manifest existing = consolidate_manifest(dir, header, &damaged, [&](bool other_settings) {
-    // Under the folder lock: no render can start or claim in between.
-    foreign = other_settings;
-    if (foreign && FolderClaim::others_active(dir))
-      throw UsageError(dir +
-                       " is being rendered right now with other settings (timeline, backend, "
-                       "resolution, samples, quality or colour): refusing to mix the two renders; "
-                       "use another --out or wait for it to finish");
-    claim.acquire(dir);
-    if (foreign) remove_foreign_render(dir);
-  });
+  const Manifest existing =
+      consolidate_manifest(dir, header, &damaged, [&](const Manifest* other_settings) {
+        // Under the folder lock: no render can start or claim in between.
+        foreign = other_settings != nullptr;
+        if (foreign && FolderClaim::others_active(dir))
+          throw UsageError(
+              dir +
+              " is being rendered right now with other settings (timeline, backend, "
+              "resolution, samples, quality or colour): refusing to mix the two renders; "
+              "use another --out or wait for it to finish");
+        claim.acquire(dir);
+        if (foreign) remove_foreign_render(dir, *other_settings);
+      });
   if (!damaged.empty())
     std::fprintf(stderr, "note: %s/manifest.json is damaged (%s); it was set aside\n", dir.c_str(),
                  damaged.c_str());

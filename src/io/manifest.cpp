@@ -196,9 +196,10 @@ class DirLock {
   int fd_;
 };
 
-// manifest.json if it belongs to this render, else nothing; `damaged` says why it was not used.
+// manifest.json if it belongs to this render, else nothing; `damaged` says why it was not used,
+// `foreign` receives it when it belongs to other settings.
 std::optional<Manifest> load_own(const std::string& dir, const ManifestHeader& header,
-                                 std::string* damaged, bool* foreign) {
+                                 std::string* damaged, std::optional<Manifest>* foreign) {
   std::optional<Manifest> m;
   try {
     m = read_manifest_json(dir + "/manifest.json");
@@ -207,7 +208,7 @@ std::optional<Manifest> load_own(const std::string& dir, const ManifestHeader& h
     return std::nullopt;
   }
   if (m && !m->header.same_render_as(header)) {
-    if (foreign) *foreign = true;
+    if (foreign) *foreign = std::move(m);
     return std::nullopt;
   }
   return m;
@@ -227,11 +228,13 @@ void record_frame(const std::string& dir, const ManifestHeader& header,
 }
 
 Manifest consolidate_manifest(const std::string& dir, const ManifestHeader& header,
-                              std::string* damaged, const std::function<void(bool)>& on_foreign) {
+                              std::string* damaged,
+                              const std::function<void(const Manifest*)>& on_foreign) {
   DirLock lock(dir);
-  bool foreign = false;
+  std::optional<Manifest> foreign;
   std::optional<Manifest> own = load_own(dir, header, damaged, &foreign);
-  if (on_foreign) on_foreign(foreign);  // may throw: refuse to replace a live render's manifest
+  // May throw: refuse to replace a live render's manifest.
+  if (on_foreign) on_foreign(foreign ? &*foreign : nullptr);
   Manifest m = own ? *own : Manifest{header, {}};
   m.header = header;
   merge_journal(dir, render_key(header), m);

@@ -65,10 +65,11 @@ std::string framemd5_text(const Manifest& m);
 void record_frame(const std::string& dir, const ManifestHeader& header, const ManifestFrame& frame);
 // Locks DIR/.manifest.lock, merges DIR/manifest.json (when it belongs to this render) with the
 // journal, rewrites manifest.json and frames.framemd5, empties the journal and returns the result.
-// `damaged` receives why an unreadable manifest.json was set aside. `on_foreign(true)` is called
-// when manifest.json belongs to other settings, before anything is written; it may throw to refuse.
+// `damaged` receives why an unreadable manifest.json was set aside. `on_foreign` is called under
+// the lock before anything is written, with the manifest of other settings the folder holds
+// (nullptr when it holds none); it may throw to refuse.
 Manifest consolidate_manifest(const std::string& dir, const ManifestHeader& header,
                               std::string* damaged = nullptr,
-                              const std::function<void(bool)>& on_foreign = nullptr);
+                              const std::function<void(const Manifest*)>& on_foreign = nullptr);
 
 }  // namespace sdfreel
