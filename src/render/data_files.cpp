@@ -16,18 +16,45 @@ bool is_within(const fs::path& dir, const fs::path& root) {
   return true;
 }
 
+fs::path executable_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
+// True when the running executable lies inside the build tree it was built in.
+bool in_build_tree(const fs::path& exe_dir) {
+#if defined(SDFREEL_BUILD_DIR)
+  std::error_code ec;
+  const fs::path build = fs::canonical(SDFREEL_BUILD_DIR, ec);
+  return !ec && is_within(exe_dir, build);
+#else
+  (void)exe_dir;
+  return false;
+#endif
+}
+
 }  // namespace
 
 std::vector<fs::path> data_file_candidates(const std::string& relative) {
   std::vector<fs::path> candidates;
-  std::error_code ec;
-  const fs::path exe_dir = fs::canonical("/proc/self/exe", ec).parent_path();
-  if (ec) return candidates;
+  const fs::path exe_dir = executable_dir();
+  if (exe_dir.empty()) return candidates;
   candidates.push_back(exe_dir / ".." / "share" / "sdfreel" / relative);
-#if defined(SDFREEL_SOURCE_DIR) && defined(SDFREEL_BUILD_DIR)
-  const fs::path build = fs::canonical(SDFREEL_BUILD_DIR, ec);
-  if (!ec && is_within(exe_dir, build))
-    candidates.push_back(fs::path(SDFREEL_SOURCE_DIR) / relative);
+#if defined(SDFREEL_SOURCE_DIR)
+  if (in_build_tree(exe_dir)) candidates.push_back(fs::path(SDFREEL_SOURCE_DIR) / relative);
+#endif
+  return candidates;
+}
+
+std::vector<fs::path> module_file_candidates(const std::string& name) {
+  std::vector<fs::path> candidates;
+  const fs::path exe_dir = executable_dir();
+  if (exe_dir.empty()) return candidates;
+  candidates.push_back(exe_dir / ".." / "lib" / "sdfreel" / name);
+#if defined(SDFREEL_BUILD_DIR)
+  if (in_build_tree(exe_dir))
+    candidates.push_back(fs::path(SDFREEL_BUILD_DIR) / "lib" / "sdfreel" / name);
 #endif
   return candidates;
 }

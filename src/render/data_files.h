@@ -13,4 +13,9 @@ namespace sdfreel {
 // by accident on the build machine.
 std::vector<std::filesystem::path> data_file_candidates(const std::string& relative);
 
+// Places to look for a module sdfreel opens at run time (e.g. "sdfreel_image_oiio.so"), best
+// first: <prefix>/lib/sdfreel/ next to the executable; then, only for an executable inside its
+// build tree, the build tree's lib/sdfreel/.
+std::vector<std::filesystem::path> module_file_candidates(const std::string& name);
+
 }  // namespace sdfreel

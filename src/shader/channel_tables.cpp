@@ -39,7 +39,7 @@ ChannelBinding read_binding(const TomlReader& r, const toml::node& n, const std:
     return b;
   }
   const toml::table& t = r.table(n, key);
-  r.check_keys(t, key, {"pass", "texture", "cubemap", "filter", "wrap", "vflip"});
+  r.check_keys(t, key, {"pass", "texture", "cubemap", "filter", "wrap", "vflip", "srgb"});
   const int sources =
       int(t.contains("pass")) + int(t.contains("texture")) + int(t.contains("cubemap"));
   if (sources != 1)
@@ -77,6 +77,12 @@ ChannelBinding read_binding(const TomlReader& r, const toml::node& n, const std:
   if (const toml::node* v = t.get("vflip")) {
     if (!v->is_boolean()) r.fail(*v, key + ".vflip must be true or false, not " + type_name(*v));
     b.vflip = v->as_boolean()->get();
+  }
+  if (const toml::node* v = t.get("srgb")) {
+    if (!v->is_boolean()) r.fail(*v, key + ".srgb must be true or false, not " + type_name(*v));
+    if (b.kind == ChannelKind::Pass)
+      r.fail(*v, key + ".srgb applies to an image file (texture or cubemap), not to a pass");
+    b.srgb = v->as_boolean()->get();
   }
   return b;
 }

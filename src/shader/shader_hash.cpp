@@ -23,7 +23,7 @@ std::string shader_project_sha256(const ShaderProject& p) {
     for (const ChannelBinding& b : pass.channels) {
       add(bytes, std::to_string(int(b.kind)) + " " + std::to_string(int(b.pass)) + " " +
                      std::to_string(int(b.filter)) + " " + std::to_string(int(b.wrap)) + " " +
-                     std::to_string(int(b.vflip)));
+                     std::to_string(int(b.vflip)) + " " + std::to_string(int(b.srgb)));
       for (const std::string& f : b.files) add(bytes, read_shader_bytes(f));
     }
   }

@@ -4,8 +4,11 @@
 // or Shadertoy's JSON export, plus the timeline's [shader] settings. Plain data: the GL backend
 // (backends/gl/shadertoy_*) runs it, the timeline validates [params] against its uniforms.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "render/image.h"
 
 namespace sdfreel {
 
@@ -27,6 +30,8 @@ struct ChannelBinding {
   Filter filter = Filter::Linear;
   Wrap wrap = Wrap::Clamp;
   bool vflip = false;
+  bool srgb = false;  // Texture: 8/16-bit texels decoded from sRGB to linear (the site's sampler)
+  std::shared_ptr<const ImageRGBA> image;  // Texture: its texels, read at load (channel_images.h)
   std::string origin_file;  // where it was bound, for messages (line and column 0 when unknown)
   int origin_line = 0, origin_column = 0;
 };
@@ -51,7 +56,7 @@ struct ShaderProject {
   bool display_referred = true;  // output = "display": the numbers written are sRGB display values
   std::array<double, 4> date{2026.0, 0.0, 1.0, 0.0};  // iDate at TIME 0: year, month 0-11, day, s
   double sample_rate = 44100.0;
-  bool non_finite_black = true;  // NaN/Inf pixels written black (else the frame fails)
+  bool non_finite_black = true;           // NaN/Inf pixels written black (else the frame fails)
   std::vector<std::string> texture_dirs;  // where a JSON input's file is looked for
 
   const ShaderPass* find(PassKind kind) const;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "shader/channel_images.h"
 #include "shader/channel_tables.h"
 #include "shader/shader_files.h"
 #include "shader/shader_scene.h"
@@ -55,6 +56,7 @@ std::shared_ptr<const SceneInfo> ShaderTimelineLoader::load(const TomlReader& r,
     apply_channel_tables(r, r.table(*c, "channels"), fs::path(r.file()).parent_path().string(),
                          *project);
   check_shader_project(*project);
+  load_channel_images(*project);
   return make_shader_scene(project, name);
 }
 

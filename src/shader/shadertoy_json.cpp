@@ -82,6 +82,9 @@ ChannelBinding read_input(const JsonReader& r, const json& in,
     if (wrap == "clamp") b.wrap = Wrap::Clamp;
     if (wrap == "repeat") b.wrap = Wrap::Repeat;
     if (s->contains("vflip")) b.vflip = (*s)["vflip"] == "true" || (*s)["vflip"] == true;
+    // The site writes "true"/"false" strings; a hand-written export may use booleans.
+    if (s->contains("srgb") && b.kind != ChannelKind::Pass)
+      b.srgb = (*s)["srgb"] == "true" || (*s)["srgb"] == true;
   }
   b.origin_file = r.path;
   return b;

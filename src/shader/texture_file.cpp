@@ -1,32 +1,40 @@
 #include "shader/texture_file.h"
 
-#include <filesystem>
+#include <array>
 
-#include "io/exr_file.h"
-#include "io/png_file.h"
+#include "render/srgb.h"
 #include "timeline/timeline.h"
 
 namespace sdfreel {
 
-ImageRGBA read_texture_file(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  try {
-    if (ext == ".exr") return read_exr_file(path);
-    if (ext != ".png")
-      throw InputError(path, 0, 0,
-                       "a texture is a .png or .exr file in this build (other formats: convert "
-                       "them, e.g. `convert in.jpg out.png`)");
-    const PngPixels png = read_png(path, 3);
-    ImageRGBA image(png.width, png.height);
-    for (size_t i = 0; i < size_t(png.width) * size_t(png.height); ++i) {
-      for (size_t c = 0; c < 3; ++c) image.pixels[4 * i + c] = png.samples[3 * i + c] / 65535.0f;
-      image.pixels[4 * i + 3] = 1.0f;
+ImageRGBA texture_texels(const StoredImage& stored, bool srgb) {
+  const bool integer = stored.bits == 8 || stored.bits == 16;
+  // Division, not multiplication by 1/255: code / 255 is the float nearest the exact value.
+  const float scale = stored.bits == 8 ? 255.0f : stored.bits == 16 ? 65535.0f : 1.0f;
+  const bool decode = srgb && integer;
+  const int n = stored.channels;
+  ImageRGBA image(stored.width, stored.height);
+  for (size_t i = 0; i < size_t(stored.width) * size_t(stored.height); ++i) {
+    const float* s = &stored.samples[i * size_t(n)];
+    // 1: gray; 2: gray and alpha; 3: RGB; 4: RGBA.
+    const std::array<float, 4> v =
+        n >= 3   ? std::array<float, 4>{s[0], s[1], s[2], n == 4 ? s[3] : scale}
+        : n == 2 ? std::array<float, 4>{s[0], s[0], s[0], s[1]}
+                 : std::array<float, 4>{s[0], s[0], s[0], scale};
+    float* out = &image.pixels[4 * i];
+    for (size_t c = 0; c < 4; ++c) {
+      out[c] = integer ? v[c] / scale : v[c];
+      if (decode && c < 3) out[c] = srgb_to_linear(out[c]);
     }
-    return image;
-  } catch (const InputError&) {
-    throw;
+  }
+  return image;
+}
+
+ImageRGBA read_texture_file(const std::string& path, bool srgb) {
+  try {
+    return texture_texels(read_stored_image(path), srgb);
   } catch (const std::exception& e) {
-    throw InputError(path, 0, 0, std::string("cannot decode the texture: ") + e.what());
+    throw InputError(path, 0, 0, std::string("cannot read the image: ") + e.what());
   }
 }
 

@@ -228,6 +228,20 @@ TEST(Still, WritesOnePngAndOneExr) {
   EXPECT_EQ(run_sdfreel("still t.toml --time 0.25 -o a.jpg", dir).status, 2);
 }
 
+// A built-in scene's still and render never open OpenImageIO (some 250 shared libraries): only a
+// shader's image channels do (docs/startup-and-io.md).
+TEST(Still, NeverLoadsOpenImageIO) {
+  const std::string dir = scratch_dir("still_libraries");
+  write_file(dir + "/t.toml", small_timeline(2));
+  for (const std::string args :
+       {"--version", "still t.toml --time 0.25 -o a.png", "render t.toml"}) {
+    const RunResult r = run_sdfreel(args, dir, "LD_DEBUG=files ");
+    ASSERT_EQ(r.status, 0) << args;
+    EXPECT_NE(r.err.find("libpng"), std::string::npos) << "LD_DEBUG reports libraries: " << args;
+    EXPECT_EQ(r.err.find("libOpenImageIO"), std::string::npos) << args;
+  }
+}
+
 TEST(Verify, PassesOnItsOwnRenderAndFailsOnADifferentFrame) {
   const std::string dir = scratch_dir("verify");
   write_file(dir + "/t.toml", small_timeline(3));

@@ -10,6 +10,7 @@
 #include "gl/gl_cli_fixture.h"
 #include "io/frame_files.h"
 #include "io/png_file.h"
+#include "render/srgb.h"
 #include "support/run.h"
 #include "support/scratch.h"
 
@@ -286,6 +287,52 @@ TEST_F(Shadertoy, NonFinitePixelsAreWrittenBlackWithAWarning) {
   EXPECT_NE(strict.err.find("frame 0: pixel (0, 0) channel R is NaN"), std::string::npos)
       << strict.err;
   EXPECT_FALSE(fs::exists(dir + "/out/frames/00000.png"));
+}
+
+TEST_F(Shadertoy, SrgbChannelsDecodeTheirTexels) {
+  const uint8_t rgb[] = {188, 51, 0};
+  const std::vector<unsigned char> png = encode_png(1, 1, 3, 8, rgb);
+  test::write_file(dir + "/one.png", std::string(png.begin(), png.end()));
+  const char* shader =
+      "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel1, vec2(0.5)); }\n";
+  write(shader, "\n[channels.image]\niChannel1 = { texture = \"one.png\", srgb = true }\n");
+  const test::RunResult r = run_sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(pixel(0, 3, 2, 0), srgb_to_linear(188.0f / 255.0f), kStep);
+  EXPECT_NEAR(pixel(0, 3, 2, 1), srgb_to_linear(0.2f), kStep);
+  write(shader, "\n[channels.image]\niChannel1 = { texture = \"one.png\" }\n");
+  ASSERT_EQ(run_sdfreel("render t.toml", dir).status, 0);
+  EXPECT_NEAR(pixel(0, 3, 2, 0), 188.0 / 255.0, kStep);  // as stored: Shadertoy's default
+}
+
+TEST_F(Shadertoy, BadImageFilesExitTwoNamingThePassAndChannel) {
+  test::write_file(dir + "/broken.jpg", "\xff\xd8\xff not a JPEG");
+  const char* shader = "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel2, p); }\n";
+  for (const std::string file : {"broken.jpg", "nowhere.png"}) {
+    SCOPED_TRACE(file);
+    write(shader, "\n[channels.image]\niChannel2 = { texture = \"" + file + "\" }\n");
+    const test::RunResult r = run_sdfreel("render t.toml", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("t.toml:13:13: error: image iChannel2"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+  }
+}
+
+// OpenImageIO (some 250 shared libraries) is opened only by a timeline that binds an image.
+TEST_F(Shadertoy, OpenImageIOIsLoadedOnlyForImageChannels) {
+  const uint8_t rgb[] = {1, 2, 3};
+  const std::vector<unsigned char> png = encode_png(1, 1, 3, 8, rgb);
+  test::write_file(dir + "/one.png", std::string(png.begin(), png.end()));
+  const char* shader = "void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p); }\n";
+  write(shader);
+  test::RunResult r = run_sdfreel("render t.toml --frames 0", dir, "LD_DEBUG=files ");
+  ASSERT_EQ(r.status, 0) << r.err.substr(0, 2000);
+  EXPECT_EQ(r.err.find("libOpenImageIO"), std::string::npos);
+  write(shader, "\n[channels.image]\niChannel0 = { texture = \"one.png\" }\n");
+  r = run_sdfreel("render t.toml --frames 0", dir, "LD_DEBUG=files ");
+  ASSERT_EQ(r.status, 0) << r.err.substr(0, 2000);
+  EXPECT_NE(r.err.find("libOpenImageIO"), std::string::npos);
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ done
 deb=$(ls "$tmp"/pkg/sdfreel_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "package: $(basename "$deb"), Depends: $depends"
-for lib in libpng16 libopenexr libopencolorio libavcodec libtbb; do
+for lib in libpng16 libopenexr libopencolorio libavcodec libtbb libopenimageio; do
   [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib"
 done
 if [[ " ${backends[*]} " == *" gl "* ]]; then
@@ -97,3 +97,22 @@ fails_without ocio/config.ocio cpu "cannot find the shipped OCIO config"
 if [[ " ${backends[*]} " == *" gl "* ]]; then
   fails_without shaders gl "cannot find the GLSL shader folder"
 fi
+
+# A shader's image channel opens the installed image module (lib/sdfreel, OpenImageIO): `check`
+# reads the image from both installs, and fails, naming the module, without it.
+img=$tmp/image-channel
+mkdir "$img"
+cp "$tmp/ref/${backends[0]}/frames/00000.png" "$img/picture.png"
+echo 'void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p / iResolution.xy); }' >"$img/s.glsl"
+printf '[video]\nshader = "s.glsl"\n[channels.image]\niChannel0 = { texture = "picture.png" }\n' >"$img/t.toml"
+for prefix in "$tmp/prefix" "$tmp/deb/usr"; do
+  [ -f "$prefix/lib/sdfreel/sdfreel_image_oiio.so" ] || fail "$prefix: no lib/sdfreel/sdfreel_image_oiio.so"
+  (cd "$img" && "$prefix/bin/sdfreel" check t.toml >"$img.log" 2>&1) ||
+    fail "$prefix: check of an image channel: $(tail -n 3 "$img.log")"
+done
+mv "$tmp/prefix/lib/sdfreel" "$tmp/prefix/lib/sdfreel.away"
+if (cd "$img" && "$tmp/prefix/bin/sdfreel" check t.toml 2>"$img.log"); then
+  fail "without lib/sdfreel the installed binary still read an image"
+fi
+grep -q "image module" "$img.log" || fail "without lib/sdfreel: expected 'image module', got: $(cat "$img.log")"
+echo "image channel: read through the installed module; without it: $(grep -m 1 "image module" "$img.log")"

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include "io/png_file.h"
+#include "render/srgb.h"
 #include "scenes/scene.h"
 #include "shader/shader_project.h"
 #include "support/scratch.h"
@@ -88,6 +90,45 @@ TEST_F(ShaderTimeline, RefusalsPointAtTheKey) {
   EXPECT_NE(error("[video2]\n").find("unknown table"), std::string::npos);
   EXPECT_NE(error("[shader]\noutput = \"hdr\"\n").find("t.toml:4:10: error:"), std::string::npos);
   EXPECT_NE(error("[video.adaptive]\n").find("not defined for a user's shader"), std::string::npos);
+}
+
+TEST_F(ShaderTimeline, ImageChannelsAreReadAtLoadWithTheirSrgbKey) {
+  const uint8_t rgb[] = {188, 51, 0};
+  const std::vector<unsigned char> png = encode_png(1, 1, 3, 8, rgb);
+  test::write_file(dir + "/one.png", std::string(png.begin(), png.end()));
+  const Timeline tl = load(
+      "[channels.image]\niChannel0 = { texture = \"one.png\", srgb = true }\n"
+      "iChannel1 = { texture = \"one.png\", filter = \"nearest\" }\n");
+  const ShaderPass& image = project(tl).passes[1];
+  const ChannelBinding& decoded = image.channels[0];
+  ASSERT_TRUE(decoded.image);
+  EXPECT_TRUE(decoded.srgb);
+  EXPECT_EQ(decoded.image->pixels[0], srgb_to_linear(188.0f / 255.0f));
+  const ChannelBinding& stored = image.channels[1];
+  ASSERT_TRUE(stored.image);
+  EXPECT_FALSE(stored.srgb);  // Shadertoy's default: the numbers stored
+  EXPECT_EQ(stored.image->pixels[0], 188.0f / 255.0f);
+  EXPECT_EQ(stored.filter, Filter::Nearest);
+  EXPECT_EQ(stored.wrap, Wrap::Repeat);
+  EXPECT_TRUE(stored.vflip);
+}
+
+TEST_F(ShaderTimeline, ImageChannelRefusalsNameTheFilePassAndChannel) {
+  test::write_file(dir + "/broken.png", "not an image");
+  EXPECT_NE(error("[channels.image]\niChannel3 = { texture = \"broken.png\" }\n")
+                .find("t.toml:4:13: error: image iChannel3: " + dir +
+                      "/broken.png: cannot read the image: "),
+            std::string::npos);
+  EXPECT_NE(
+      error("[channels.image]\niChannel3 = { texture = \"gone.png\" }\n")
+          .find("t.toml:4:13: error: image iChannel3: texture file " + dir + "/gone.png not found"),
+      std::string::npos);
+  EXPECT_NE(error("[channels.image]\niChannel3 = { pass = \"buffer_a\", srgb = true }\n")
+                .find("t.toml:4:41: error: channels.image.iChannel3.srgb applies to an image file"),
+            std::string::npos);
+  EXPECT_NE(error("[channels.image]\niChannel3 = { texture = \"one.png\", srgb = 1 }\n")
+                .find("srgb must be true or false"),
+            std::string::npos);
 }
 
 TEST_F(ShaderTimeline, BuiltInScenesRefuseTheShaderTables) {

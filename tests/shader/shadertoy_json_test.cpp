@@ -81,16 +81,18 @@ TEST(ShadertoyJson, TextureInputsAreFoundBesideTheJsonThenInTheTextureFolders) {
   test::write_file(dir + "/media/wood.png", "png bytes");
   const std::string text = R"({"Shader": {"renderpass": [{"type": "image", "code": "", "inputs": [
       {"ctype": "texture", "src": "/media/a/noise.png", "channel": 0,
-       "sampler": {"filter": "mipmap", "wrap": "repeat", "vflip": "false"}},
+       "sampler": {"filter": "mipmap", "wrap": "repeat", "vflip": "false", "srgb": "true"}},
       {"ctype": "texture", "src": "/media/a/wood.png", "channel": 3}]}]}})";
   const ShaderProject p = read_shadertoy_json(dir + "/s.json", text, {dir + "/media"});
   const ChannelBinding& noise = p.passes[0].channels[0];
   EXPECT_EQ(noise.kind, ChannelKind::Texture);
   EXPECT_EQ(noise.files, std::vector<std::string>({dir + "/noise.png"}));
   EXPECT_FALSE(noise.vflip);
+  EXPECT_TRUE(noise.srgb);
   const ChannelBinding& wood = p.passes[0].channels[3];
   EXPECT_EQ(wood.files, std::vector<std::string>({dir + "/media/wood.png"}));
   EXPECT_TRUE(wood.vflip);  // Shadertoy's default for a texture
+  EXPECT_FALSE(wood.srgb);  // as stored, unless the sampler says srgb
   EXPECT_EQ(wood.filter, Filter::Mipmap);
   EXPECT_EQ(wood.wrap, Wrap::Repeat);
 }

@@ -70,7 +70,7 @@ ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
       GLuint tex = 0;
       glm::ivec2 size(0);
       if (b.kind == ChannelKind::Texture) {
-        ImageRGBA image = read_texture_file(b.files.at(0));
+        ImageRGBA image = b.image ? *b.image : read_texture_file(b.files.at(0), b.srgb);
         // Uploaded as read, the file's top row would be GL's row 0, at v = 0 (the bottom): the
         // picture upside down, as WebGL shows it without flipping. Shadertoy's vflip (its
         // default) flips it upright: the bottom row first.
