@@ -12,8 +12,10 @@
 #include "io/atomic_file.h"
 #include "io/folder_claim.h"
 #include "io/frame_files.h"
+#include "io/manifest_journal.h"
 #include "io/video_encoder.h"
 #include "pipeline/frame_writer.h"
+#include "pipeline/shader_checkpoints.h"
 
 namespace sdfreel {
 
@@ -49,6 +51,7 @@ void remove_foreign_render(const std::string& dir, const Manifest& old) {
     for (const char* ext : {"exr", "png"}) removed += fs::remove(frame_path(dir, i, ext), ec);
   const std::string& video = old.header.video;
   const bool had_video = !video.empty() && fs::remove(dir + "/" + video, ec);
+  fs::remove_all(checkpoint_dir(dir), ec);  // of the old settings: never usable
   std::fprintf(stderr,
                "note: %s held a render of other settings; its %zu frame files%s%s were removed\n",
                dir.c_str(), removed, had_video ? " and " : "", had_video ? video.c_str() : "");
@@ -88,6 +91,7 @@ int run_render(const RenderOptions& o) {
         claim.acquire(dir);
         if (foreign) remove_foreign_render(dir, *other_settings);
       });
+  use_shader_checkpoints(pipe, dir, render_key(header), true);
   if (!damaged.empty())
     std::fprintf(stderr, "note: %s/manifest.json is damaged (%s); it was set aside\n", dir.c_str(),
                  damaged.c_str());

@@ -12,6 +12,8 @@
 #include "io/frame_files.h"
 #include "io/hash_reference.h"
 #include "io/manifest_differences.h"
+#include "io/manifest_journal.h"
+#include "pipeline/shader_checkpoints.h"
 
 namespace sdfreel {
 
@@ -68,6 +70,8 @@ int run_verify(const VerifyOptions& o) {
   if (!same_frame_size(ref, tl, o.manifest)) return 1;
   const std::string dir = std::filesystem::path(o.manifest).parent_path().string();
   const std::string out_dir = o.render.out.empty() ? (dir.empty() ? "." : dir) : o.render.out;
+  // The reference's checkpoints of a shader's buffers, read only: frames of the same settings.
+  use_shader_checkpoints(pipe, dir.empty() ? "." : dir, render_key(header), false);
   if (!o.tolerance.empty())
     return verify_within_tolerance(pipe, selected_frames(tl, o.render), dir.empty() ? "." : dir,
                                    out_dir);

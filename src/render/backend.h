@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "render/buffer_checkpoints.h"
 #include "render/frame_context.h"
 #include "render/image.h"
 #include "render/live_pixels.h"
@@ -30,6 +31,10 @@ class Backend {
   // The context of any frame of the render: a user's shader with feedback replays its buffers
   // through it (docs/shaders.md). Backends without such state ignore it.
   virtual void set_frame_source(std::function<FrameContext(int)> source) { (void)source; }
+  // Where such a shader keeps checkpoints of its buffers and restarts from (docs/shaders.md).
+  virtual void set_checkpoints(std::shared_ptr<BufferCheckpoints> checkpoints) {
+    (void)checkpoints;
+  }
 };
 
 }  // namespace sdfreel

@@ -58,6 +58,8 @@ struct ShaderProject {
   double sample_rate = 44100.0;
   bool non_finite_black = true;           // NaN/Inf pixels written black (else the frame fails)
   std::vector<std::string> texture_dirs;  // where a JSON input's file is looked for
+  int checkpoint_every =
+      60;  // buffers' state kept before every Nth frame (feedback only); 0: never
 
   const ShaderPass* find(PassKind kind) const;
   // True when some pass reads a buffer that has not run yet in the frame (itself or a later one):

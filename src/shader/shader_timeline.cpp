@@ -32,6 +32,12 @@ void read_settings(const TomlReader& r, const toml::table& s, ShaderProject& p) 
   }
   if (const toml::node* n = s.get("non_finite"))
     p.non_finite_black = r.choice(*n, "shader.non_finite", {"black", "error"}) == "black";
+  if (const toml::node* n = s.get("checkpoint_every")) {
+    const auto* v = n->as_integer();
+    if (!v || v->get() < 0 || v->get() > 1000000)
+      r.fail(*n, "shader.checkpoint_every is a whole number of frames (0 keeps no checkpoints)");
+    p.checkpoint_every = int(v->get());
+  }
   if (const toml::node* n = s.get("sample_rate")) {
     p.sample_rate = r.number(*n, "shader.sample_rate");
     if (!(p.sample_rate > 0)) r.fail(*n, "shader.sample_rate must be > 0");
@@ -48,7 +54,7 @@ std::shared_ptr<const SceneInfo> ShaderTimelineLoader::load(const TomlReader& r,
   const toml::table* settings = s ? &r.table(*s, "shader") : nullptr;
   if (settings)
     r.check_keys(*settings, "[shader]",
-                 {"output", "textures", "date", "sample_rate", "non_finite"});
+                 {"output", "textures", "date", "sample_rate", "non_finite", "checkpoint_every"});
   auto project =
       std::make_shared<ShaderProject>(read_shader_files(path, texture_dirs(r, settings)));
   if (settings) read_settings(r, *settings, *project);

@@ -4,6 +4,7 @@
 // buffers from frame 0 first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "gl/gl_cli_fixture.h"
@@ -49,17 +50,18 @@ const char* kChannels =
 class ShadertoyFeedback : public test::GlCliTest {
  protected:
   // The shader folder and a timeline of `frames` frames at 10 fps naming it.
-  void write(int frames, const std::string& resolution = "[16, 8]", int cost = 0) {
+  void write(int frames, const std::string& resolution = "[16, 8]", int cost = 0,
+             const std::string& extra = "") {
     fs::create_directories(dir + "/tabs");
     test::write_file(dir + "/tabs/buffer_a.glsl", buffer_a(cost));
     test::write_file(dir + "/tabs/buffer_b.glsl", kBufferB);
     test::write_file(dir + "/tabs/image.glsl", kImage);
     test::write_file(dir + "/tabs/common.glsl", kCommon);
     test::write_file(dir + "/tabs/channels.toml", kChannels);
-    test::write_file(
-        dir + "/t.toml",
-        "[video]\nshader = \"tabs\"\nfps = 10\nduration = " + std::to_string(frames / 10.0) +
-            "\nresolution = " + resolution + "\n\n[output]\nframes = [\"png\"]\nvideo = \"\"\n");
+    test::write_file(dir + "/t.toml",
+                     "[video]\nshader = \"tabs\"\nfps = 10\nduration = " +
+                         std::to_string(frames / 10.0) + "\nresolution = " + resolution +
+                         "\n\n[output]\nframes = [\"png\"]\nvideo = \"\"\n" + extra);
   }
   std::vector<std::string> hashes(const std::string& out) {
     return test::framemd5_frame_lines(dir + "/" + out + "/frames.framemd5");
@@ -111,6 +113,50 @@ TEST_F(ShadertoyFeedback, FramesAreTheSameAfterKillAndResume) {
   render("killed", "--resume");
   render("sequence");
   EXPECT_EQ(hashes("killed"), hashes("sequence"));
+}
+
+TEST_F(ShadertoyFeedback, LaterRangesAndVerifyStartFromCheckpointsWithTheSameBits) {
+  write(8, "[16, 8]", 0, "\n[shader]\ncheckpoint_every = 3\n");
+  render("sequence");
+  const std::vector<std::string> all = hashes("sequence");
+  const std::string kept = dir + "/sequence/checkpoints/";
+  // Before frames 3 and 6; none before frame 0 or the end.
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(kept)) files.push_back(e.path().filename());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, std::vector<std::string>({"buffers-00003.ckpt", "buffers-00006.ckpt"}));
+
+  // A later range (a shard, a resume) starts from the latest checkpoint at or before it.
+  std::string err = render("sequence", "--frames 7");
+  EXPECT_NE(err.find("from the checkpoint before frame 6"), std::string::npos) << err;
+  EXPECT_NE(err.find("replaying the shader's buffers of frames 6-6 for frame 7"), std::string::npos)
+      << err;
+  EXPECT_EQ(hashes("sequence"), all);
+
+  // A corrupted checkpoint is not used, with a warning: the one before it is, the frame is the
+  // same, and the replay writes the damaged one again.
+  std::string bytes = test::read_file(kept + "buffers-00006.ckpt");
+  bytes[bytes.size() / 2] ^= 0x10;
+  test::write_file(kept + "buffers-00006.ckpt", bytes);
+  err = render("sequence", "--frames 7");
+  EXPECT_NE(err.find("buffers-00006.ckpt is not used: a wrong checksum"), std::string::npos) << err;
+  EXPECT_NE(err.find("from the checkpoint before frame 3"), std::string::npos) << err;
+  EXPECT_EQ(hashes("sequence"), all);
+  err = render("sequence", "--frames 7");
+  EXPECT_EQ(err.find("warning"), std::string::npos) << err;
+  EXPECT_NE(err.find("from the checkpoint before frame 6"), std::string::npos) << err;
+
+  // verify reads the reference's checkpoints and writes none.
+  fs::remove(kept + "buffers-00003.ckpt");
+  for (const char* frame : {"7", "5"}) {
+    const test::RunResult v = run_sdfreel(
+        std::string("verify t.toml --manifest sequence/manifest.json --frames ") + frame, dir);
+    EXPECT_EQ(v.status, 0) << v.err;
+    EXPECT_EQ(v.err.find("from the checkpoint before frame 6") != std::string::npos,
+              std::string(frame) == "7")
+        << v.err;
+  }
+  EXPECT_FALSE(fs::exists(kept + "buffers-00003.ckpt"));
 }
 
 TEST_F(ShadertoyFeedback, StillAtATimeIsThatFrame) {

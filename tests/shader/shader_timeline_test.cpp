@@ -90,6 +90,11 @@ TEST_F(ShaderTimeline, RefusalsPointAtTheKey) {
   EXPECT_NE(error("[video2]\n").find("unknown table"), std::string::npos);
   EXPECT_NE(error("[shader]\noutput = \"hdr\"\n").find("t.toml:4:10: error:"), std::string::npos);
   EXPECT_NE(error("[video.adaptive]\n").find("not defined for a user's shader"), std::string::npos);
+  for (const char* every : {"-1", "2.5", "\"often\""})
+    EXPECT_NE(error(std::string("[shader]\ncheckpoint_every = ") + every + "\n")
+                  .find("t.toml:4:20: error: shader.checkpoint_every is a whole number"),
+              std::string::npos)
+        << every;
 }
 
 TEST_F(ShaderTimeline, ImageChannelsAreReadAtLoadWithTheirSrgbKey) {

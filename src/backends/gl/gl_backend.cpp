@@ -59,6 +59,11 @@ void GlBackend::set_frame_source(std::function<FrameContext(int)> source) {
   if (shadertoy_) shadertoy_->set_frame_source(std::move(source));
 }
 
+void GlBackend::set_checkpoints(std::shared_ptr<BufferCheckpoints> checkpoints) {
+  checkpoints_ = checkpoints;
+  if (shadertoy_) shadertoy_->set_checkpoints(std::move(checkpoints));
+}
+
 void GlBackend::begin_shader(const SceneInfo& scene) {
   project_ = scene.shader_project;
   scene_.reset();
@@ -66,6 +71,7 @@ void GlBackend::begin_shader(const SceneInfo& scene) {
   shadertoy_.reset();
   shadertoy_ = std::make_unique<ShadertoyRunner>(platform_->gl(), find_shader_dir(), project_);
   shadertoy_->set_frame_source(frame_source_);
+  shadertoy_->set_checkpoints(checkpoints_);
   platform_->release();
 }
 

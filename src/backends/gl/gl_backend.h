@@ -28,6 +28,7 @@ class GlBackend : public Backend {
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
   const SampleCounts& sample_counts() const override { return counts_; }
   void set_frame_source(std::function<FrameContext(int)> source) override;
+  void set_checkpoints(std::shared_ptr<BufferCheckpoints> checkpoints) override;
 
  private:
   void begin_shader(const SceneInfo& scene);
@@ -37,6 +38,7 @@ class GlBackend : public Backend {
   std::unique_ptr<ShadertoyRunner> shadertoy_;  // a user's shader, instead of scene_
   std::shared_ptr<const ShaderProject> project_;
   std::function<FrameContext(int)> frame_source_;
+  std::shared_ptr<BufferCheckpoints> checkpoints_;
   std::unique_ptr<Scene> scene_;
   std::string scene_shader_;
   std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_

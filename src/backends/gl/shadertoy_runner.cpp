@@ -169,21 +169,75 @@ void ShadertoyRunner::run_buffers(const FrameContext& ctx) {
   }
 }
 
+// Frame k needs the buffers of frames 0..k-1: what is missing comes from the latest checkpoint
+// that saves work, then a replay.
+void ShadertoyRunner::catch_up(int k) {
+  if (buffers_at_ >= k || buffers_at_ < 0) clear_buffers();
+  if (buffers_at_ + 1 == k) return;
+  if (checkpoints_)
+    if (auto state = checkpoints_->latest(buffers_at_ + 2, k, width_, height_);
+        state && restore(*state)) {
+      std::fprintf(stderr, "restarting the shader's buffers from the checkpoint before frame %d\n",
+                   state->next_frame);
+    }
+  if (buffers_at_ + 1 < k)  // a start, a shard or a resume: say why the first frame is slow
+    std::fprintf(stderr,
+                 "replaying the shader's buffers of frames %d-%d for frame %d (its frames "
+                 "depend on the ones before)\n",
+                 buffers_at_ + 1, k - 1, k);
+  for (int i = buffers_at_ + 1; i < k; ++i) {
+    run_buffers(context(i));
+    buffers_at_ = i;
+    keep_checkpoint();
+  }
+}
+
+bool ShadertoyRunner::restore(const BufferState& state) {
+  const size_t texels = size_t(width_) * size_t(height_) * 4;
+  for (size_t k = 0; k < buffers_.size(); ++k)
+    if (state.buffers[k].size() != (buffers_[k].texture[0] ? texels : 0)) return false;
+  for (size_t k = 0; k < buffers_.size(); ++k) {
+    Buffer& b = buffers_[k];
+    if (!b.texture[0]) continue;
+    gl_.BindTexture(GL_TEXTURE_2D, b.texture[b.front]);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width_, height_, 0, GL_RGBA, GL_FLOAT,
+                   state.buffers[k].data());
+    if (mipmapped_[k]) gl_.GenerateMipmap(GL_TEXTURE_2D);  // as run_buffers leaves it
+  }
+  gl_.check("restoring the shader's buffers from a checkpoint");
+  buffers_at_ = state.next_frame - 1;
+  return true;
+}
+
+void ShadertoyRunner::keep_checkpoint() {
+  const int next = buffers_at_ + 1;
+  if (!checkpoints_ || !project_->has_feedback() || next % checkpoints_->every() != 0 ||
+      checkpoints_->has(next))
+    return;
+  BufferState state{next, width_, height_, {}};
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  for (size_t k = 0; k < buffers_.size(); ++k) {
+    const Buffer& b = buffers_[k];
+    if (!b.texture[0]) continue;
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                             b.texture[b.front], 0);
+    state.buffers[k].resize(size_t(width_) * size_t(height_) * 4);
+    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, state.buffers[k].data());
+  }
+  gl_.check("reading the shader's buffers for a checkpoint");
+  checkpoints_->save(state);
+}
+
 ImageRGBA ShadertoyRunner::render(const FrameContext& ctx) {
   resize(ctx.width, ctx.height);
   const int k = ctx.frame_index;
-  if (project_->has_feedback()) {
-    // Frame k needs the buffers of frames 0..k-1: replay what is missing, from 0 if need be.
-    if (buffers_at_ >= k || buffers_at_ < 0) clear_buffers();
-    if (buffers_at_ + 1 < k)  // a start, a shard or a resume: say why the first frame is slow
-      std::fprintf(stderr,
-                   "replaying the shader's buffers of frames %d-%d for frame %d (its frames "
-                   "depend on the ones before)\n",
-                   buffers_at_ + 1, k - 1, k);
-    for (int i = buffers_at_ + 1; i < k; ++i) run_buffers(context(i));
-  }  // without feedback every buffer is written before any pass reads it: nothing to clear
+  if (project_->has_feedback()) catch_up(k);
+  // Without feedback every buffer is written before any pass reads it: nothing to catch up.
   run_buffers(ctx);  // also sets this frame's iTimeDelta, which the Image pass reads
   buffers_at_ = k;
+  keep_checkpoint();
 
   std::vector<glm::vec2> offsets;  // GL's fragCoord counts rows from the bottom
   for (const glm::vec2& o : ctx.sample_offsets) offsets.push_back({o.x, 1.0f - o.y});

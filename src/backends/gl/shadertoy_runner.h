@@ -3,14 +3,16 @@
 // once per frame at the frame's size into float ping-pong textures (a pass reads the latest output
 // of each buffer: this frame's when it ran before, the previous frame's otherwise, itself
 // included), then the Image pass once per sub-pixel sample offset, summed in a float target in
-// fixed order. A shader with feedback replays its buffers from frame 0 (buffers only) whenever a
-// frame does not follow the one before it, so every frame has the same bits however it is reached.
+// fixed order. A shader with feedback replays its buffers (buffers only) whenever a frame does not
+// follow the one before it, from the latest checkpoint of their state if the render keeps them,
+// else from frame 0, so every frame has the same bits however it is reached.
 #include <array>
 #include <functional>
 #include <memory>
 #include <vector>
 
 #include "backends/gl/gl_api.h"
+#include "render/buffer_checkpoints.h"
 #include "render/frame_context.h"
 #include "render/image.h"
 #include "shader/shader_project.h"
@@ -29,6 +31,8 @@ class ShadertoyRunner {
 
   // The context of any frame, for replays and iTimeDelta.
   void set_frame_source(std::function<FrameContext(int)> source) { source_ = std::move(source); }
+  // Where the buffers' state is kept every N frames and restored from (nullptr: nowhere).
+  void set_checkpoints(std::shared_ptr<BufferCheckpoints> c) { checkpoints_ = std::move(c); }
   // The display-referred (or linear, [shader] output) RGBA image of ctx's frame, row 0 at the top.
   ImageRGBA render(const FrameContext& ctx);
 
@@ -46,6 +50,9 @@ class ShadertoyRunner {
   void resize(int width, int height);
   void clear_buffers();
   void run_buffers(const FrameContext& ctx);
+  void catch_up(int frame);  // buffers of frames before `frame`: from a checkpoint or replayed
+  bool restore(const BufferState& state);  // false: its buffers are not this shader's
+  void keep_checkpoint();  // after the buffers of frame buffers_at_, when one is due
   void run_pass(const ShaderPass& pass, size_t index, const FrameContext& ctx, GLuint target,
                 const std::vector<glm::vec2>& offsets);
   void set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx);
@@ -56,6 +63,7 @@ class ShadertoyRunner {
   const GlApi& gl_;
   std::shared_ptr<const ShaderProject> project_;
   std::function<FrameContext(int)> source_;
+  std::shared_ptr<BufferCheckpoints> checkpoints_;
   std::vector<Program> programs_;    // one per pass, in project order
   std::array<Buffer, 5> buffers_{};  // by PassKind (BufferA..CubeA)
   std::array<bool, 5> mipmapped_{};  // by PassKind: some channel reads it with mipmap filtering
