@@ -15,13 +15,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr char kMagic[8] = {'S', 'D', 'F', 'R', 'B', 'U', 'F', '1'};
+constexpr char kMagic[8] = {'S', 'D', 'F', 'R', 'B', 'U', 'F', '2'};
 
 struct Header {  // after the magic and the key
-  int32_t next_frame, width, height;
+  int32_t next_frame, width, height, cube_size;
   uint32_t present;  // bit k: buffer k (PassKind) is in the payload
+  uint32_t reserved;
   uint64_t payload_bytes, checksum;
 };
+
+constexpr size_t kCubeA = 4;
+
+// Floats of buffer k in a state of this size: RGBA texels, six faces for Cube A.
+uint64_t buffer_floats(size_t k, const Header& h) {
+  return k == kCubeA ? uint64_t(uint32_t(h.cube_size)) * uint64_t(uint32_t(h.cube_size)) * 4 * 6
+                     : uint64_t(uint32_t(h.width)) * uint64_t(uint32_t(h.height)) * 4;
+}
 
 template <typename T>
 void append(std::string& out, const T& v) {
@@ -61,7 +70,7 @@ std::string encode_checkpoint(const BufferState& s, const std::string& key) {
   std::string out(kMagic, sizeof kMagic);
   append(out, uint64_t(key.size()));
   out += key;
-  append(out, Header{s.next_frame, s.width, s.height, present, payload.size(),
+  append(out, Header{s.next_frame, s.width, s.height, s.cube_size, present, 0, payload.size(),
                      checksum64(payload.data(), payload.size())});
   return out + payload;
 }
@@ -78,22 +87,26 @@ std::string decode_checkpoint(const std::string& bytes, const std::string& key, 
   at += key.size();
   Header h{};
   if (!take(bytes, at, h)) return "truncated";
-  const uint64_t texels = uint64_t(uint32_t(h.width)) * uint64_t(uint32_t(h.height)) * 4;
-  if (h.width <= 0 || h.height <= 0 || h.next_frame < 0 ||
-      h.payload_bytes != texels * sizeof(float) * uint64_t(__builtin_popcount(h.present)))
+  uint64_t floats = 0;
+  for (size_t k = 0; k < s.buffers.size(); ++k)
+    if (h.present & (1u << k)) floats += buffer_floats(k, h);
+  if (h.width <= 0 || h.height <= 0 || h.cube_size < 0 || h.next_frame < 0 || h.present >= 32 ||
+      h.width > 65536 || h.height > 65536 || h.cube_size > 65536 ||
+      h.payload_bytes != floats * sizeof(float))
     return "a damaged header";
   if (header_only) {
-    s.next_frame = h.next_frame, s.width = h.width, s.height = h.height;
+    s.next_frame = h.next_frame, s.width = h.width, s.height = h.height, s.cube_size = h.cube_size;
     return "";
   }
   if (bytes.size() - at != h.payload_bytes) return "truncated";
   if (checksum64(bytes.data() + at, h.payload_bytes) != h.checksum) return "a wrong checksum";
-  s = BufferState{h.next_frame, h.width, h.height, {}};
+  s = BufferState{h.next_frame, h.width, h.height, h.cube_size, {}};
   for (size_t k = 0; k < s.buffers.size(); ++k) {
     if (!(h.present & (1u << k))) continue;
-    s.buffers[k].resize(size_t(texels));
-    std::memcpy(s.buffers[k].data(), bytes.data() + at, size_t(texels) * sizeof(float));
-    at += size_t(texels) * sizeof(float);
+    const size_t floats_k = size_t(buffer_floats(k, h));
+    s.buffers[k].resize(floats_k);
+    std::memcpy(s.buffers[k].data(), bytes.data() + at, floats_k * sizeof(float));
+    at += floats_k * sizeof(float);
   }
   return "";
 }

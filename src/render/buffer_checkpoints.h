@@ -10,10 +10,12 @@
 namespace sdfreel {
 
 // What a replay of frames 0..next_frame-1 leaves in the buffers, by PassKind (Buffer A..D, Cube
-// A): RGBA32F texels in GL's row order; empty for a buffer the shader does not have.
+// A): RGBA32F texels in GL's row order (Cube A: its six faces in GL's order, cube_size square);
+// empty for a buffer the shader does not have.
 struct BufferState {
   int next_frame = 0;
   int width = 0, height = 0;
+  int cube_size = 0;
   std::array<std::vector<float>, 5> buffers;
 };
 

@@ -6,8 +6,8 @@
 
 namespace sdfreel {
 
-// Fills each Texture binding's `image`. Throws InputError naming the file that binds the
-// channel, the pass, the channel and the image file.
+// Fills each Texture binding's `image` and each Cubemap binding's `cube`. Throws InputError naming
+// the file that binds the channel, the pass, the channel and the image file.
 void load_channel_images(ShaderProject& project);
 
 }  // namespace sdfreel

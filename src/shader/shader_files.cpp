@@ -126,9 +126,6 @@ void check_shader_project(const ShaderProject& p) {
   check_lines(p.common_file, p.common_source);
   for (const ShaderPass& pass : p.passes) {
     check_lines(pass.file, pass.source);
-    if (pass.kind == PassKind::CubeA)
-      throw InputError(pass.file, 0, 0,
-                       "the Cube A tab is not supported yet (docs/shaders.md lists what is)");
     const bool cube = pass.kind == PassKind::CubeA;
     const char* entry = cube ? "mainCubemap" : "mainImage";
     if (!declares_function(pass.source, entry))
@@ -147,13 +144,10 @@ void check_shader_project(const ShaderProject& p) {
                          what + " reads " + pass_name(b.pass) +
                              ", which this shader does not have (no " + pass_name(b.pass) +
                              " tab)");
-      if (b.kind == ChannelKind::Cubemap)
-        throw InputError(file, b.origin_line, b.origin_column,
-                         what + ": cubemap channels are not supported yet (docs/shaders.md)");
       for (const std::string& f : b.files)
         if (!fs::is_regular_file(f))
           throw InputError(file, b.origin_line, b.origin_column,
-                           what + ": texture file " + f + " not found");
+                           what + ": image file " + f + " not found");
     }
   }
 }

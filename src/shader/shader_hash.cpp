@@ -31,6 +31,7 @@ std::string shader_project_sha256(const ShaderProject& p) {
   for (double d : p.date) add(bytes, std::to_string(d));
   add(bytes, std::to_string(p.sample_rate));
   add(bytes, p.non_finite_black ? "black" : "error");
+  add(bytes, std::to_string(p.cube_size));
   return sha256_hex(bytes);
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/image.h"
+#include "shader/cube_faces.h"
 
 namespace sdfreel {
 
@@ -32,6 +33,7 @@ struct ChannelBinding {
   bool vflip = false;
   bool srgb = false;  // Texture: 8/16-bit texels decoded from sRGB to linear (the site's sampler)
   std::shared_ptr<const ImageRGBA> image;  // Texture: its texels, read at load (channel_images.h)
+  std::shared_ptr<const CubeFaces> cube;   // Cubemap: its faces, read at load
   std::string origin_file;  // where it was bound, for messages (line and column 0 when unknown)
   int origin_line = 0, origin_column = 0;
 };
@@ -58,8 +60,9 @@ struct ShaderProject {
   double sample_rate = 44100.0;
   bool non_finite_black = true;           // NaN/Inf pixels written black (else the frame fails)
   std::vector<std::string> texture_dirs;  // where a JSON input's file is looked for
-  int checkpoint_every =
-      60;  // buffers' state kept before every Nth frame (feedback only); 0: never
+  // The buffers' state is kept before every Nth frame (feedback only; 0: never).
+  int checkpoint_every = 60;
+  int cube_size = 1024;  // Cube A's faces, in texels (Shadertoy's 1024)
 
   const ShaderPass* find(PassKind kind) const;
   // True when some pass reads a buffer that has not run yet in the frame (itself or a later one):

@@ -38,6 +38,12 @@ void read_settings(const TomlReader& r, const toml::table& s, ShaderProject& p) 
       r.fail(*n, "shader.checkpoint_every is a whole number of frames (0 keeps no checkpoints)");
     p.checkpoint_every = int(v->get());
   }
+  if (const toml::node* n = s.get("cube_size")) {
+    const auto* v = n->as_integer();
+    if (!v || v->get() < 1 || v->get() > 4096)
+      r.fail(*n, "shader.cube_size is Cube A's face size in texels, 1 to 4096 (the site's: 1024)");
+    p.cube_size = int(v->get());
+  }
   if (const toml::node* n = s.get("sample_rate")) {
     p.sample_rate = r.number(*n, "shader.sample_rate");
     if (!(p.sample_rate > 0)) r.fail(*n, "shader.sample_rate must be > 0");
@@ -54,7 +60,8 @@ std::shared_ptr<const SceneInfo> ShaderTimelineLoader::load(const TomlReader& r,
   const toml::table* settings = s ? &r.table(*s, "shader") : nullptr;
   if (settings)
     r.check_keys(*settings, "[shader]",
-                 {"output", "textures", "date", "sample_rate", "non_finite", "checkpoint_every"});
+                 {"output", "textures", "date", "sample_rate", "non_finite", "checkpoint_every",
+                  "cube_size"});
   auto project =
       std::make_shared<ShaderProject>(read_shader_files(path, texture_dirs(r, settings)));
   if (settings) read_settings(r, *settings, *project);

@@ -69,9 +69,22 @@ ChannelBinding read_input(const JsonReader& r, const json& in,
   } else if (type == "texture") {
     b = default_binding(ChannelKind::Texture);
     b.files = {find_texture(r, r.text(in, "src", "filepath"), dirs)};
+  } else if (const auto it = in.contains("id") ? outputs.find(id_string(in["id"])) : outputs.end();
+             type == "cubemap" && it != outputs.end()) {
+    b = default_binding(ChannelKind::Pass);  // Cube A's output
+    b.pass = it->second;
+  } else if (type == "cubemap") {
+    // The site's six faces: NAME.EXT for +x, then NAME_1.EXT .. NAME_5.EXT.
+    b = default_binding(ChannelKind::Cubemap);
+    const fs::path src = r.text(in, "src", "filepath");
+    const std::string stem = (src.parent_path() / src.stem()).string();
+    const std::string ext = src.extension().string();
+    b.files = {find_texture(r, src.string(), dirs)};
+    for (int f = 1; f < 6; ++f)
+      b.files.push_back(find_texture(r, stem + "_" + std::to_string(f) + ext, dirs));
   } else {
     r.fail("input of type '" + type +
-           "' is not supported (textures and buffers are; docs/shaders.md)");
+           "' is not supported (textures, cubemaps and buffers are; docs/shaders.md)");
   }
   if (const auto s = in.find("sampler"); s != in.end() && s->is_object()) {
     const std::string filter = s->value("filter", "");

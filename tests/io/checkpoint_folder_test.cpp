@@ -15,9 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 BufferState state(int next_frame, float seed) {
-  BufferState s{next_frame, 3, 2, {}};
-  for (size_t k : {size_t(0), size_t(2)}) {
-    s.buffers[k].resize(3 * 2 * 4);
+  BufferState s{next_frame, 3, 2, 2, {}};
+  for (size_t k : {size_t(0), size_t(2), size_t(4)}) {  // Buffers A and C, Cube A (six faces)
+    s.buffers[k].resize(k == 4 ? 2 * 2 * 4 * 6 : 3 * 2 * 4);
     for (size_t i = 0; i < s.buffers[k].size(); ++i) s.buffers[k][i] = seed + float(i) * 0.1f + k;
   }
   s.buffers[2][5] = -1e30f;  // any float, as stored
@@ -31,6 +31,7 @@ TEST(CheckpointFile, RoundTripsBitForBit) {
   EXPECT_EQ(back.next_frame, 30);
   EXPECT_EQ(back.width, 3);
   EXPECT_EQ(back.height, 2);
+  EXPECT_EQ(back.cube_size, 2);
   EXPECT_EQ(back.buffers, s.buffers);
 }
 

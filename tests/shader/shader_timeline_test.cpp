@@ -90,6 +90,9 @@ TEST_F(ShaderTimeline, RefusalsPointAtTheKey) {
   EXPECT_NE(error("[video2]\n").find("unknown table"), std::string::npos);
   EXPECT_NE(error("[shader]\noutput = \"hdr\"\n").find("t.toml:4:10: error:"), std::string::npos);
   EXPECT_NE(error("[video.adaptive]\n").find("not defined for a user's shader"), std::string::npos);
+  EXPECT_NE(
+      error("[shader]\ncube_size = 0\n").find("t.toml:4:13: error: shader.cube_size is Cube A"),
+      std::string::npos);
   for (const char* every : {"-1", "2.5", "\"often\""})
     EXPECT_NE(error(std::string("[shader]\ncheckpoint_every = ") + every + "\n")
                   .find("t.toml:4:20: error: shader.checkpoint_every is a whole number"),
@@ -126,7 +129,7 @@ TEST_F(ShaderTimeline, ImageChannelRefusalsNameTheFilePassAndChannel) {
             std::string::npos);
   EXPECT_NE(
       error("[channels.image]\niChannel3 = { texture = \"gone.png\" }\n")
-          .find("t.toml:4:13: error: image iChannel3: texture file " + dir + "/gone.png not found"),
+          .find("t.toml:4:13: error: image iChannel3: image file " + dir + "/gone.png not found"),
       std::string::npos);
   EXPECT_NE(error("[channels.image]\niChannel3 = { pass = \"buffer_a\", srgb = true }\n")
                 .find("t.toml:4:41: error: channels.image.iChannel3.srgb applies to an image file"),

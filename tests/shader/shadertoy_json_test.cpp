@@ -97,6 +97,41 @@ TEST(ShadertoyJson, TextureInputsAreFoundBesideTheJsonThenInTheTextureFolders) {
   EXPECT_EQ(wood.wrap, Wrap::Repeat);
 }
 
+TEST(ShadertoyJson, CubemapInputsAreSixFaceFilesAndCubeAIsAPass) {
+  const std::string dir = test::scratch_dir("shadertoy-json-cubemaps");
+  const std::vector<std::string> names = {"sky.jpg",   "sky_1.jpg", "sky_2.jpg",
+                                          "sky_3.jpg", "sky_4.jpg", "sky_5.jpg"};
+  for (const std::string& n : names) test::write_file(dir + "/" + n, "jpeg bytes");
+  const std::string text = R"({"Shader": {"renderpass": [
+      {"type": "cubemap", "name": "Cube A", "code": "", "outputs": [{"id": "4dX3Rr", "channel": 0}],
+       "inputs": [{"ctype": "cubemap", "src": "/media/a/sky.jpg", "channel": 1,
+                   "sampler": {"filter": "linear", "srgb": "true"}}]},
+      {"type": "image", "code": "", "inputs": [{"ctype": "cubemap", "id": "4dX3Rr", "channel": 0}]}]}})";
+  const ShaderProject p = read_shadertoy_json(dir + "/s.json", text, {});
+  ASSERT_EQ(p.passes.size(), 2u);
+  EXPECT_EQ(p.passes[0].kind, PassKind::CubeA);
+  const ChannelBinding& sky = p.passes[0].channels[1];
+  EXPECT_EQ(sky.kind, ChannelKind::Cubemap);
+  std::vector<std::string> want;
+  for (const std::string& n : names) want.push_back(dir + "/" + n);
+  EXPECT_EQ(sky.files, want);
+  EXPECT_TRUE(sky.srgb);
+  EXPECT_EQ(sky.filter, Filter::Linear);
+  const ChannelBinding& cube = p.passes[1].channels[0];
+  EXPECT_EQ(cube.kind, ChannelKind::Pass);
+  EXPECT_EQ(cube.pass, PassKind::CubeA);
+  std::filesystem::remove(dir + "/sky_4.jpg");
+  try {
+    read_shadertoy_json(dir + "/s.json", text, {});
+    FAIL() << "a missing face was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cube_a iChannel1: texture /media/a/sky_4.jpg: no file "
+                                         "sky_4.jpg"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ShadertoyJson, RefusalsNameWhatIsWrong) {
   const std::string bad = error_of("{\"Shader\": {\n  \"renderpass\": [,]}}");
   EXPECT_NE(bad.find("s.json:2:"), std::string::npos) << bad;

@@ -2,11 +2,13 @@
 // its channels and its draws, one per sub-pixel offset, summed by blending.
 #include <glm/gtc/type_ptr.hpp>
 
+#include "backends/gl/shadertoy_cube.h"
 #include "backends/gl/shadertoy_runner.h"
 
 namespace sdfreel {
 
-void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx) {
+void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx,
+                                   glm::ivec2 size) {
   auto f1 = [&](const char* name, float v) {
     if (GLint at = location(index, name); at >= 0) gl_.Uniform1fv(at, 1, &v);
   };
@@ -14,7 +16,7 @@ void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const F
     if (GLint at = location(index, name); at >= 0) gl_.Uniform3fv(at, 1, glm::value_ptr(v));
   };
   const float time = float(ctx.scene_time);
-  f3("iResolution", {float(ctx.width), float(ctx.height), 1.0f});
+  f3("iResolution", {float(size.x), float(size.y), 1.0f});
   f1("iTime", time);
   f1("iTimeDelta", time_delta_);
   if (GLint at = location(index, "iFrame"); at >= 0) gl_.Uniform1iv(at, 1, &ctx.frame_index);
@@ -24,10 +26,10 @@ void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const F
   float sizes[12] = {};
   for (size_t c = 0; c < 4; ++c) {
     const ChannelBinding& b = pass.channels[c];
-    const glm::ivec2 size = b.kind == ChannelKind::Pass ? glm::ivec2(ctx.width, ctx.height)
-                                                        : texture_sizes_[index * 4 + c];
-    sizes[3 * c] = float(size.x);
-    sizes[3 * c + 1] = float(size.y);
+    const glm::ivec2 read =
+        b.kind == ChannelKind::Pass ? buffer_size(size_t(b.pass)) : texture_sizes_[index * 4 + c];
+    sizes[3 * c] = float(read.x);
+    sizes[3 * c + 1] = float(read.y);
     sizes[3 * c + 2] = b.kind == ChannelKind::None ? 0.0f : 1.0f;
   }
   if (GLint at = location(index, "iChannelResolution"); at >= 0) gl_.Uniform3fv(at, 4, sizes);
@@ -79,28 +81,38 @@ void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const F
 }
 
 void ShadertoyRunner::run_pass(const ShaderPass& pass, size_t index, const FrameContext& ctx,
-                               GLuint target, const std::vector<glm::vec2>& offsets) {
+                               GLuint target, GLenum face, const std::vector<glm::vec2>& offsets) {
+  const bool cube_face = face != GL_TEXTURE_2D;
+  const glm::ivec2 size =
+      cube_face ? glm::ivec2(project_->cube_size) : glm::ivec2(ctx.width, ctx.height);
   gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+  gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face, target, 0);
   const GLenum draw = GL_COLOR_ATTACHMENT0;
   gl_.DrawBuffers(1, &draw);
-  gl_.Viewport(0, 0, ctx.width, ctx.height);
+  gl_.Viewport(0, 0, size.x, size.y);
   const float zero[4] = {0, 0, 0, 0};
   gl_.ClearBufferfv(GL_COLOR, 0, zero);
   gl_.UseProgram(programs_[index].id);
   gl_.BindVertexArray(vao_);
-  set_uniforms(pass, index, ctx);
+  set_uniforms(pass, index, ctx, size);
+  if (GLint at = location(index, "sdfreel_corners"); at >= 0 && cube_face)
+    gl_.Uniform3fv(
+        at, 5, glm::value_ptr(cube_face_corners(int(face - GL_TEXTURE_CUBE_MAP_POSITIVE_X))[0]));
   for (size_t c = 0; c < 4; ++c) {
     const ChannelBinding& b = pass.channels[c];
     GLuint tex = 0;
+    GLenum kind = GL_TEXTURE_2D;
     if (b.kind == ChannelKind::Pass) {
       const Buffer& buf = buffers_[size_t(b.pass)];
       tex = buf.texture[buf.front];
-    } else if (b.kind == ChannelKind::Texture) {
+      kind = buffer_target(size_t(b.pass));
+    } else if (b.kind == ChannelKind::Texture || b.kind == ChannelKind::Cubemap) {
       tex = textures_[index * 4 + c];
+      kind = texture_targets_[index * 4 + c];
     }
     gl_.ActiveTexture(GLenum(GL_TEXTURE0 + c));
-    gl_.BindTexture(GL_TEXTURE_2D, tex);
+    gl_.BindTexture(GL_TEXTURE_2D, kind == GL_TEXTURE_2D ? tex : 0);
+    gl_.BindTexture(GL_TEXTURE_CUBE_MAP, kind == GL_TEXTURE_CUBE_MAP ? tex : 0);
     gl_.BindSampler(GLuint(c), samplers_[index * 4 + c]);
   }
   gl_.ActiveTexture(GL_TEXTURE0);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "backends/gl/gl_program.h"
+#include "backends/gl/shadertoy_cube.h"
 #include "backends/gl/shadertoy_source.h"
 #include "shader/shadertoy_uniforms.h"
 #include "shader/texture_file.h"
@@ -40,6 +41,7 @@ GLuint make_sampler(const GlApi& gl, const ChannelBinding& b) {
 ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
                                  std::shared_ptr<const ShaderProject> project)
     : gl_(gl), project_(std::move(project)) {
+  gl_.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // filtering across cube edges, as WebGL 2 does
   std::string log;
   const GLuint vs = compile_fullscreen_vertex(gl_, shader_dir);
   for (const ShaderPass& pass : project_->passes) {
@@ -59,17 +61,27 @@ ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
     gl_.GetProgramiv(p.id, GL_LINK_STATUS, &ok);
     if (!ok) {
       gl_.DeleteShader(vs);
-      throw shadertoy_compile_error(*project_, pass, "link error (check mainImage's signature)");
+      throw shadertoy_compile_error(*project_, pass,
+                                    pass.kind == PassKind::CubeA
+                                        ? "link error (check mainCubemap's signature)"
+                                        : "link error (check mainImage's signature)");
     }
     for (const ShadertoyUniform& u : shadertoy_uniforms())
       p.locations.emplace_back(u.name, gl_.GetUniformLocation(p.id, u.name));
-    p.locations.emplace_back("sdfreel_offset", gl_.GetUniformLocation(p.id, "sdfreel_offset"));
+    for (const char* name : {"sdfreel_offset", "sdfreel_corners"})
+      p.locations.emplace_back(name, gl_.GetUniformLocation(p.id, name));
     programs_.push_back(std::move(p));
     for (const ChannelBinding& b : pass.channels) {
       samplers_.push_back(make_sampler(gl_, b));
       GLuint tex = 0;
+      GLenum target = GL_TEXTURE_2D;
       glm::ivec2 size(0);
-      if (b.kind == ChannelKind::Texture) {
+      if (b.kind == ChannelKind::Cubemap) {
+        if (!b.cube) throw std::logic_error("ShadertoyRunner: a cubemap channel without its faces");
+        tex = cube_texture(gl_, b.cube->size, b.cube.get());
+        target = GL_TEXTURE_CUBE_MAP;
+        size = {b.cube->size, b.cube->size};
+      } else if (b.kind == ChannelKind::Texture) {
         ImageRGBA image = b.image ? *b.image : read_texture_file(b.files.at(0), b.srgb);
         // Uploaded as read, the file's top row would be GL's row 0, at v = 0 (the bottom): the
         // picture upside down, as WebGL shows it without flipping. Shadertoy's vflip (its
@@ -83,6 +95,7 @@ ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
         size = {image.width, image.height};
       }
       textures_.push_back(tex);
+      texture_targets_.push_back(target);
       texture_sizes_.push_back(size);
     }
   }
@@ -116,7 +129,8 @@ void ShadertoyRunner::resize(int width, int height) {
   for (const ShaderPass& pass : project_->passes)
     if (pass.kind != PassKind::Image)
       for (GLuint& t : buffers_[size_t(pass.kind)].texture)
-        t = float_texture(gl_, width, height, nullptr);
+        t = pass.kind == PassKind::CubeA ? cube_texture(gl_, project_->cube_size, nullptr)
+                                         : float_texture(gl_, width, height, nullptr);
   image_texture_ = float_texture(gl_, width, height, nullptr);
   width_ = width;
   height_ = height;
@@ -129,11 +143,28 @@ void ShadertoyRunner::clear_buffers() {
   for (size_t k = 0; k < buffers_.size(); ++k)
     for (GLuint t : buffers_[k].texture)
       if (t) {
-        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
-        gl_.ClearBufferfv(GL_COLOR, 0, zero);
-        if (mipmapped_[k]) gl_.BindTexture(GL_TEXTURE_2D, t), gl_.GenerateMipmap(GL_TEXTURE_2D);
+        for (int f = 0; f < buffer_faces(k); ++f) {
+          gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face_target(k, f), t, 0);
+          gl_.ClearBufferfv(GL_COLOR, 0, zero);
+        }
+        if (mipmapped_[k])
+          gl_.BindTexture(buffer_target(k), t), gl_.GenerateMipmap(buffer_target(k));
       }
   buffers_at_ = -1;
+}
+
+GLenum ShadertoyRunner::buffer_target(size_t kind) const {
+  return kind == size_t(PassKind::CubeA) ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+}
+
+glm::ivec2 ShadertoyRunner::buffer_size(size_t kind) const {
+  return kind == size_t(PassKind::CubeA) ? glm::ivec2(project_->cube_size)
+                                         : glm::ivec2(width_, height_);
+}
+
+GLenum ShadertoyRunner::face_target(size_t kind, int face) const {
+  return kind == size_t(PassKind::CubeA) ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face)
+                                         : GLenum(GL_TEXTURE_2D);
 }
 
 FrameContext ShadertoyRunner::context(int frame) const {
@@ -159,12 +190,14 @@ void ShadertoyRunner::run_buffers(const FrameContext& ctx) {
   for (size_t i = 0; i < project_->passes.size(); ++i) {
     const ShaderPass& pass = project_->passes[i];
     if (pass.kind == PassKind::Image) continue;
-    Buffer& b = buffers_[size_t(pass.kind)];
-    run_pass(pass, i, ctx, b.texture[1 - b.front], {glm::vec2(0.5f)});
+    const size_t k = size_t(pass.kind);
+    Buffer& b = buffers_[k];
+    for (int f = 0; f < buffer_faces(k); ++f)
+      run_pass(pass, i, ctx, b.texture[1 - b.front], face_target(k, f), {glm::vec2(0.5f)});
     b.front = 1 - b.front;
-    if (mipmapped_[size_t(pass.kind)]) {  // only where a reader samples its mip levels
-      gl_.BindTexture(GL_TEXTURE_2D, b.texture[b.front]);
-      gl_.GenerateMipmap(GL_TEXTURE_2D);
+    if (mipmapped_[k]) {  // only where a reader samples its mip levels
+      gl_.BindTexture(buffer_target(k), b.texture[b.front]);
+      gl_.GenerateMipmap(buffer_target(k));
     }
   }
 }
@@ -193,16 +226,20 @@ void ShadertoyRunner::catch_up(int k) {
 }
 
 bool ShadertoyRunner::restore(const BufferState& state) {
-  const size_t texels = size_t(width_) * size_t(height_) * 4;
-  for (size_t k = 0; k < buffers_.size(); ++k)
+  for (size_t k = 0; k < buffers_.size(); ++k) {
+    const glm::ivec2 size = buffer_size(k);
+    const size_t texels = size_t(size.x) * size_t(size.y) * 4 * size_t(buffer_faces(k));
     if (state.buffers[k].size() != (buffers_[k].texture[0] ? texels : 0)) return false;
+  }
   for (size_t k = 0; k < buffers_.size(); ++k) {
     Buffer& b = buffers_[k];
     if (!b.texture[0]) continue;
-    gl_.BindTexture(GL_TEXTURE_2D, b.texture[b.front]);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width_, height_, 0, GL_RGBA, GL_FLOAT,
-                   state.buffers[k].data());
-    if (mipmapped_[k]) gl_.GenerateMipmap(GL_TEXTURE_2D);  // as run_buffers leaves it
+    const glm::ivec2 size = buffer_size(k);
+    gl_.BindTexture(buffer_target(k), b.texture[b.front]);
+    for (int f = 0; f < buffer_faces(k); ++f)
+      gl_.TexImage2D(face_target(k, f), 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT,
+                     state.buffers[k].data() + size_t(f) * size_t(size.x) * size_t(size.y) * 4);
+    if (mipmapped_[k]) gl_.GenerateMipmap(buffer_target(k));  // as run_buffers leaves it
   }
   gl_.check("restoring the shader's buffers from a checkpoint");
   buffers_at_ = state.next_frame - 1;
@@ -214,17 +251,22 @@ void ShadertoyRunner::keep_checkpoint() {
   if (!checkpoints_ || !project_->has_feedback() || next % checkpoints_->every() != 0 ||
       checkpoints_->has(next))
     return;
-  BufferState state{next, width_, height_, {}};
+  BufferState state{next, width_, height_, project_->cube_size, {}};
   gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
   for (size_t k = 0; k < buffers_.size(); ++k) {
     const Buffer& b = buffers_[k];
     if (!b.texture[0]) continue;
-    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                             b.texture[b.front], 0);
-    state.buffers[k].resize(size_t(width_) * size_t(height_) * 4);
-    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, state.buffers[k].data());
+    const glm::ivec2 size = buffer_size(k);
+    const size_t face_texels = size_t(size.x) * size_t(size.y) * 4;
+    state.buffers[k].resize(face_texels * size_t(buffer_faces(k)));
+    for (int f = 0; f < buffer_faces(k); ++f) {
+      gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face_target(k, f),
+                               b.texture[b.front], 0);
+      gl_.ReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_FLOAT,
+                     state.buffers[k].data() + size_t(f) * face_texels);
+    }
   }
   gl_.check("reading the shader's buffers for a checkpoint");
   checkpoints_->save(state);
@@ -242,7 +284,7 @@ ImageRGBA ShadertoyRunner::render(const FrameContext& ctx) {
   std::vector<glm::vec2> offsets;  // GL's fragCoord counts rows from the bottom
   for (const glm::vec2& o : ctx.sample_offsets) offsets.push_back({o.x, 1.0f - o.y});
   const ShaderPass& image = project_->passes.back();
-  run_pass(image, project_->passes.size() - 1, ctx, image_texture_, offsets);
+  run_pass(image, project_->passes.size() - 1, ctx, image_texture_, GL_TEXTURE_2D, offsets);
 
   ImageRGBA out(ctx.width, ctx.height);
   gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);

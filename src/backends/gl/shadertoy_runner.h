@@ -53,9 +53,14 @@ class ShadertoyRunner {
   void catch_up(int frame);  // buffers of frames before `frame`: from a checkpoint or replayed
   bool restore(const BufferState& state);  // false: its buffers are not this shader's
   void keep_checkpoint();  // after the buffers of frame buffers_at_, when one is due
+  // Draws into `target`'s level 0: a 2D texture (face GL_TEXTURE_2D) or a face of Cube A.
   void run_pass(const ShaderPass& pass, size_t index, const FrameContext& ctx, GLuint target,
-                const std::vector<glm::vec2>& offsets);
-  void set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx);
+                GLenum face, const std::vector<glm::vec2>& offsets);
+  void set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx, glm::ivec2 size);
+  GLenum buffer_target(size_t kind) const;    // GL_TEXTURE_CUBE_MAP for Cube A
+  glm::ivec2 buffer_size(size_t kind) const;  // the frame's, or Cube A's faces
+  int buffer_faces(size_t kind) const { return kind == size_t(PassKind::CubeA) ? 6 : 1; }
+  GLenum face_target(size_t kind, int face) const;
   GLint location(size_t index, const char* name) const;
   FrameContext context(int frame) const;
   float time_delta(const FrameContext& ctx) const;
@@ -64,10 +69,11 @@ class ShadertoyRunner {
   std::shared_ptr<const ShaderProject> project_;
   std::function<FrameContext(int)> source_;
   std::shared_ptr<BufferCheckpoints> checkpoints_;
-  std::vector<Program> programs_;    // one per pass, in project order
-  std::array<Buffer, 5> buffers_{};  // by PassKind (BufferA..CubeA)
-  std::array<bool, 5> mipmapped_{};  // by PassKind: some channel reads it with mipmap filtering
-  std::vector<GLuint> textures_;     // by pass index * 4 + channel: image files, 0 otherwise
+  std::vector<Program> programs_;        // one per pass, in project order
+  std::array<Buffer, 5> buffers_{};      // by PassKind (BufferA..CubeA)
+  std::array<bool, 5> mipmapped_{};      // by PassKind: some channel reads it with mipmap filtering
+  std::vector<GLuint> textures_;         // by pass index * 4 + channel: image files, 0 otherwise
+  std::vector<GLenum> texture_targets_;  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP, the same way
   std::vector<glm::ivec2> texture_sizes_;
   std::vector<GLuint> samplers_;  // by pass index * 4 + channel
   GLuint framebuffer_ = 0, image_texture_ = 0, vao_ = 0;

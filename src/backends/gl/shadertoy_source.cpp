@@ -19,11 +19,24 @@ std::string line_directive(int source, int line) {
          std::to_string(source) + "\n";
 }
 
-// #version, Shadertoy's define and every uniform of shadertoy_uniforms(), then sdfreel's own.
-std::string header() {
+// A channel the pass samples as a cube: a cubemap file, or Cube A's output.
+bool reads_cube(const ChannelBinding& b) {
+  return b.kind == ChannelKind::Cubemap ||
+         (b.kind == ChannelKind::Pass && b.pass == PassKind::CubeA);
+}
+
+// #version, Shadertoy's define and every uniform of shadertoy_uniforms() (iChannelN a samplerCube
+// where the pass reads a cube, as the site declares it), then sdfreel's own.
+std::string header(const ShaderPass& pass) {
   std::string s = "#version 450 core\n#define HW_PERFORMANCE 1\n";
-  for (const ShadertoyUniform& u : shadertoy_uniforms())
-    s += std::string("uniform ") + u.type + " " + u.name + (u.array ? "[4];\n" : ";\n");
+  for (const ShadertoyUniform& u : shadertoy_uniforms()) {
+    std::string type = u.type;
+    const std::string name = u.name;
+    if (name.size() == 9 && name.rfind("iChannel", 0) == 0 &&
+        reads_cube(pass.channels[size_t(name[8] - '0')]))
+      type = "samplerCube";
+    s += "uniform " + type + " " + name + (u.array ? "[4];\n" : ";\n");
+  }
   return s +
          "uniform vec2 sdfreel_offset;  // the sample's sub-pixel offset\nout vec4 "
          "sdfreel_color;\n";
@@ -38,13 +51,31 @@ void main() {
 }
 )";
 
+// Cube A, as the site runs it: each face is drawn with the ray from the centre through the
+// fragment, interpolated between the face's corners (shadertoy_cube.cpp).
+const char* kCubeMain = R"(
+#line 1 0
+uniform vec3 sdfreel_corners[5];  // the face's four corners, then the rays' origin
+void main() {
+  vec4 color = vec4(0.0, 0.0, 0.0, 1.0);
+  vec2 fragCoord = floor(gl_FragCoord.xy) + sdfreel_offset;
+  vec2 uv = fragCoord / iResolution.xy;
+  vec3 ro = sdfreel_corners[4];
+  vec3 rd = normalize(mix(mix(sdfreel_corners[0], sdfreel_corners[1], uv.x),
+                          mix(sdfreel_corners[3], sdfreel_corners[2], uv.x), uv.y) - ro);
+  mainCubemap(color, fragCoord, ro, rd);
+  sdfreel_color = color;
+}
+)";
+
 }  // namespace
 
 std::string shadertoy_fragment_source(const ShaderProject& project, const ShaderPass& pass) {
-  std::string s = header();
+  std::string s = header(pass);
   if (!project.common_source.empty())
     s += line_directive(kCommonSource, 1) + project.common_source + "\n";
-  s += line_directive(kPassSource, pass.first_line) + pass.source + "\n" + kMain;
+  s += line_directive(kPassSource, pass.first_line) + pass.source + "\n" +
+       (pass.kind == PassKind::CubeA ? kCubeMain : kMain);
   return s;
 }
 
