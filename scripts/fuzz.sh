@@ -9,7 +9,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-25}
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(fuzz_timeline fuzz_manifest fuzz_cli_options fuzz_shadertoy_json)
+((${#targets[@]})) || targets=(fuzz_timeline fuzz_manifest fuzz_cli_options fuzz_shadertoy_json
+  fuzz_channel_tables fuzz_checkpoint)
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -25,6 +26,8 @@ seeds_for() {
     fuzz_manifest) ls tests/fuzz_seeds/manifest/* ;;
     fuzz_cli_options) ls tests/fuzz_seeds/cli_options/* ;;
     fuzz_shadertoy_json) ls examples/shaders/*.json ;;
+    fuzz_channel_tables) ls examples/shaders/*/channels.toml examples/shaders/*.toml tests/fuzz_seeds/channel_tables/* ;;
+    fuzz_checkpoint) ls tests/fuzz_seeds/checkpoint/* ;;
   esac
 }
 

@@ -2,8 +2,10 @@
 # The GL backend on a GPU, for a machine with an NVIDIA GPU and its driver but no X server:
 # lists the devices, renders every golden timeline (tests/golden) on the GPU and holds each frame
 # to the CPU backend's by Filament's rule (`verify --tolerance filament`: at most 0.1% of display
-# values off by more than 5/255, mean under 0.5/255, a diff image on failure), then runs
-# `sdfreel bench` for every scene on cpu, llvmpipe and the GPU. Everything goes to one folder.
+# values off by more than 5/255, mean under 0.5/255, a diff image on failure; a user's shader,
+# which has no CPU twin, to llvmpipe's), then runs `sdfreel bench` for every scene on cpu,
+# llvmpipe and the GPU, and for every example shader (examples/shaders/*.toml) on llvmpipe and the
+# GPU. Everything goes to one folder.
 #
 #   scripts/gpu-check.sh [--device gpu|software|N] [--out DIR] [--resolution WxH] [--bin SDFREEL]
 #   scripts/gpu-check.sh --bundle DIR    (here: install sdfreel and the libraries it needs into
@@ -64,13 +66,17 @@ for timeline in tests/golden/*/*.toml; do
   scene=$(basename "$(dirname "$timeline")") name=$(basename "$timeline" .toml)
   work=$out/golden/$scene-$name
   rm -rf "$work" && mkdir -p "$work"
-  cp "$timeline" "$work/t.toml"
-  if ! (cd "$work" && "$bin" render t.toml --backend cpu --out cpu >cpu.log 2>&1); then
-    log "golden $scene/$name: the CPU reference failed ($work/cpu.log)"
+  # The timeline where it is (a shader's is found relative to it); the reference: the CPU's, or
+  # llvmpipe's for a user's shader.
+  t=$PWD/$timeline
+  ref=(--backend cpu)
+  [[ $scene == shader_* ]] && ref=(--backend egl --gl-device software)
+  if ! (cd "$work" && "$bin" render "$t" "${ref[@]}" --out cpu >cpu.log 2>&1); then
+    log "golden $scene/$name: the reference render failed ($work/cpu.log)"
     failed=1
     continue
   fi
-  (cd "$work" && "$bin" verify t.toml --manifest cpu/manifest.json --tolerance filament \
+  (cd "$work" && "$bin" verify "$t" --manifest cpu/manifest.json --tolerance filament \
     --backend egl --gl-device "$device" --out diff >verify.log 2>&1)
   rc=$?
   [ $rc -eq 0 ] || failed=1
@@ -95,6 +101,21 @@ for scene in $("$bin" scenes | awk '{print $1}'); do
   log "bench $scene at $resolution ($b):"
   grep -h -E "^(backend|  *final|  *draft|  *naive)|x |dB" "$b"/*.txt 2>/dev/null | head -n 20 |
     sed 's/^/  /' | tee -a "$out/summary.txt"
+done
+# A user's shader: its Image pass's samples against a 64-sample reference, llvmpipe then the GPU.
+for t in examples/shaders/*.toml; do
+  name=$(basename "$t" .toml)
+  b=$out/bench/shader-$name
+  mkdir -p "$b"
+  args=(bench "$t" --resolution "$resolution" --frames 0 --repetitions 3 --out "$b/run")
+  SDFREEL_GL_DEVICE=software "$bin" "${args[@]}" --backends egl >"$b/software.txt" 2>&1 ||
+    log "bench $name on llvmpipe failed ($b/software.txt)"
+  if [ "$device" != software ]; then
+    SDFREEL_GL_DEVICE=$device "$bin" "${args[@]}" --backends egl >"$b/gpu.txt" 2>&1 ||
+      log "bench $name on device $device failed ($b/gpu.txt)"
+  fi
+  log "bench shader $name at $resolution ($b):"
+  grep -h "spp=" "$b"/*.txt 2>/dev/null | grep "^|" | sed 's/^/  /' | tee -a "$out/summary.txt"
 done
 log "gpu-check: $([ $failed -eq 0 ] && echo "every golden frame within tolerance" ||
   echo "FAILED (see above)"); everything is in $out"

@@ -28,6 +28,7 @@
 #include "bench/pareto.h"
 #include "bench/plot.h"
 #include "bench/reference_cache.h"
+#include "bench/shader_configs.h"
 #include "bench/sweep.h"
 #include "bench/table.h"
 #include "cli/bench_io.h"
@@ -82,6 +83,7 @@ struct BenchTarget {
   Timeline tl;
   std::string timeline_hash;
   std::vector<int> frames;
+  bool shader = false;  // a user's shader: sample counts on GL, no hit mask (shader_configs.h)
 };
 
 BenchTarget load_target(const std::string& arg, const BenchOptions& o) {
@@ -112,6 +114,7 @@ BenchTarget load_target(const std::string& arg, const BenchOptions& o) {
     throw UsageError("'" + arg + "' is neither a scene (see `sdfreel scenes`) nor a timeline file");
   }
   t.frames = parse_frame_list(o.frames, t.tl.frame_count());
+  t.shader = t.tl.shader_scene != nullptr;
   return t;
 }
 
@@ -135,8 +138,18 @@ struct Reference {
   std::vector<ImageRGBA> mask;
 };
 
-Reference reference_of(const BenchTarget& t, const BenchOptions& o) {
-  const BenchConfig cfg = bench::reference_config();
+// The backend a target's reference renders on: the CPU for a scene; for a user's shader the first
+// GL backend asked for, else gl.
+std::string reference_backend(const BenchTarget& t, const std::vector<std::string>& backends) {
+  if (!t.shader) return "cpu";
+  for (const std::string& b : backends)
+    if (b != "cpu") return b;
+  return "gl";
+}
+
+Reference reference_of(const BenchTarget& t, const BenchOptions& o,
+                       const std::vector<std::string>& backends) {
+  const BenchConfig cfg = t.shader ? bench::shader_reference_config() : bench::reference_config();
   const std::string key =
       bench::reference_key(t.timeline_hash, bench::settings_text(cfg), t.tl.width, t.tl.height);
   const bench::ReferenceCache cache(o.out, key);
@@ -146,11 +159,15 @@ Reference reference_of(const BenchTarget& t, const BenchOptions& o) {
     ImageRGB16 display;
     ImageRGBA mask;
     if (o.fresh_reference || !cache.load(frame, t.tl.width, t.tl.height, display, mask)) {
-      if (!pipe) pipe = std::make_unique<FramePipeline>(t.tl, make_backend("cpu", o.threads));
+      if (!pipe)
+        pipe = std::make_unique<FramePipeline>(
+            t.tl, make_backend(reference_backend(t, backends), o.threads));
       std::fprintf(stderr, "bench: %s reference frame %d (%s, %d samples)\n", t.label.c_str(),
                    frame, cfg.name.c_str(), cfg.samples);
       display = pipe->render_context(bench_context(*pipe, frame, cfg, false)).display;
-      mask = pipe->render_context(bench_context(*pipe, frame, cfg, true)).linear;
+      // A shader has no hit mask: an empty image of the frame's size keeps the cache's format.
+      mask = t.shader ? ImageRGBA(t.tl.width, t.tl.height)
+                      : pipe->render_context(bench_context(*pipe, frame, cfg, true)).linear;
       cache.store(frame, display, mask);
     }
     ref.display.push_back(std::move(display));
@@ -204,14 +221,16 @@ BenchRow measure(FramePipeline& pipe, const BenchTarget& t, const std::string& b
   times.push_back(seconds / double(contexts.size()));
   row.seconds_per_frame = times.back();
   bench::HitMissAccumulator hits;
-  for (size_t i = 0; i < t.frames.size(); ++i)
-    hits.add(pipe.render_context(bench_context(pipe, t.frames[i], cfg, true)).linear, ref.mask[i]);
+  if (!t.shader)
+    for (size_t i = 0; i < t.frames.size(); ++i)
+      hits.add(pipe.render_context(bench_context(pipe, t.frames[i], cfg, true)).linear,
+               ref.mask[i]);
   const bench::ErrorMetrics m = error.result();
   row.psnr_db = m.psnr_db;
   row.rmse = m.rmse;
   row.mean_abs_error = m.mean_abs_error;
   row.p99_abs_error = m.p99_abs_error;
-  row.hitmiss_fraction = hits.fraction();
+  row.hitmiss_fraction = t.shader ? std::numeric_limits<double>::quiet_NaN() : hits.fraction();
   const double pixels = double(t.tl.width) * t.tl.height * double(t.frames.size());
   row.mean_samples = samples / pixels;
   row.sdf_evals_per_pixel = double(stats.sdf_evals) / pixels;
@@ -240,8 +259,9 @@ void print_preset_check(const std::vector<BenchRow>& rows) {
     if (r.preset == "draft") draft[r.scene + " " + r.backend] = &r;
     if (r.preset == "final") final_[r.scene + " " + r.backend] = &r;
   }
-  std::printf("\npreset targets: final >= %.0f dB, draft >= %.0fx faster than final\n",
-              FINAL_MIN_PSNR_DB, DRAFT_MIN_SPEEDUP);
+  if (!final_.empty())  // a user's shader has no presets
+    std::printf("\npreset targets: final >= %.0f dB, draft >= %.0fx faster than final\n",
+                FINAL_MIN_PSNR_DB, DRAFT_MIN_SPEEDUP);
   for (const auto& [key, f] : final_) {
     const auto d = draft.find(key);
     const double speedup =
@@ -342,14 +362,28 @@ int run_bench(const BenchOptions& o) {
                                                        });
                                  }),
                   configs.end());
+  std::vector<BenchConfig> shader_configs = bench::shader_sample_configs();
+  if (!o.only.empty())
+    shader_configs.erase(std::remove_if(shader_configs.begin(), shader_configs.end(),
+                                        [&](const BenchConfig& c) {
+                                          return std::none_of(o.only.begin(), o.only.end(),
+                                                              [&](const std::string& p) {
+                                                                return c.name.rfind(p, 0) == 0;
+                                                              });
+                                        }),
+                         shader_configs.end());
   std::filesystem::create_directories(o.out);
 
   std::vector<BenchRow> rows;
   std::vector<bench::IoRow> io_rows;
   int failures = 0;
   for (const BenchTarget& t : targets) {
-    const Reference ref = reference_of(t, o);
-    for (const std::string& backend : backends) {
+    const Reference ref = reference_of(t, o, backends);
+    for (const std::string& asked : backends) {
+      // A shader runs on GL only: its `cpu` rows are the reference's GL backend's.
+      const std::string backend = t.shader && asked == "cpu" ? reference_backend(t, {}) : asked;
+      if (backend != asked && std::count(backends.begin(), backends.end(), backend)) continue;
+      const std::vector<BenchConfig>& target_configs = t.shader ? shader_configs : configs;
       std::unique_ptr<FramePipeline> pipe;
       try {
         pipe = std::make_unique<FramePipeline>(t.tl, make_backend(backend, o.threads));
@@ -367,7 +401,7 @@ int run_bench(const BenchOptions& o) {
       std::vector<const BenchConfig*> measured;
       std::vector<std::vector<double>> times;
       const size_t first = rows.size();
-      for (const BenchConfig& cfg : configs) {
+      for (const BenchConfig& cfg : target_configs) {
         try {
           std::vector<double> cfg_times;
           rows.push_back(measure(*pipe, t, backend, cfg, ref, cfg_times));

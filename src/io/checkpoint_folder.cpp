@@ -89,9 +89,12 @@ std::string decode_checkpoint(const std::string& bytes, const std::string& key, 
   if (!take(bytes, at, h)) return "truncated";
   uint64_t floats = 0;
   for (size_t k = 0; k < s.buffers.size(); ++k)
-    if (h.present & (1u << k)) floats += buffer_floats(k, h);
+    if (h.present & (1u << k)) {
+      if (buffer_floats(k, h) == 0) return "a damaged header";  // Cube A present, of size 0
+      floats += buffer_floats(k, h);
+    }
   if (h.width <= 0 || h.height <= 0 || h.cube_size < 0 || h.next_frame < 0 || h.present >= 32 ||
-      h.width > 65536 || h.height > 65536 || h.cube_size > 65536 ||
+      h.reserved != 0 || h.width > 65536 || h.height > 65536 || h.cube_size > 65536 ||
       h.payload_bytes != floats * sizeof(float))
     return "a damaged header";
   if (header_only) {

@@ -139,6 +139,11 @@ void check_shader_project(const ShaderProject& p) {
       const ChannelBinding& b = pass.channels[c];
       const std::string file = b.origin_file.empty() ? pass.file : b.origin_file;
       const std::string what = std::string(pass_name(pass.kind)) + " iChannel" + std::to_string(c);
+      if (b.kind == ChannelKind::Pass && b.pass == PassKind::Image)
+        throw InputError(file, b.origin_line, b.origin_column,
+                         what +
+                             " reads the Image pass, which no channel can read (as on the site): "
+                             "draw into a buffer and read that");
       if (b.kind == ChannelKind::Pass && !p.find(b.pass))
         throw InputError(file, b.origin_line, b.origin_column,
                          what + " reads " + pass_name(b.pass) +

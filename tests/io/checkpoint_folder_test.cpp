@@ -45,6 +45,17 @@ TEST(CheckpointFile, RefusesAnotherRenderATornAndACorruptedFile) {
   flipped[flipped.size() - 7] ^= 1;
   EXPECT_EQ(decode_checkpoint(flipped, "key", back), "a wrong checksum");
   EXPECT_EQ(decode_checkpoint("hello", "key", back), "not a checkpoint");
+  // Found by fuzz_checkpoint: a byte of the reserved header field was accepted (and a re-encoded
+  // file then differed from the one read).
+  std::string reserved = bytes;
+  reserved[8 + 8 + 3 + 4 * 5 + 1] = 1;  // magic, key size, "key", five int32s, reserved's byte 1
+  EXPECT_EQ(decode_checkpoint(reserved, "key", back), "a damaged header");
+  // And a Cube A of size 0 listed as present (its texels: none, read through a null pointer).
+  BufferState empty_cube{30, 3, 2, 0, {}};
+  empty_cube.buffers[0].assign(3 * 2 * 4, 1.0f);
+  std::string cube_bytes = encode_checkpoint(empty_cube, "key");
+  cube_bytes[8 + 8 + 3 + 4 * 4] |= 0x10;  // present: bit 4, Cube A
+  EXPECT_EQ(decode_checkpoint(cube_bytes, "key", back), "a damaged header");
 }
 
 TEST(CheckpointFolder, LatestSkipsBadFilesAndRewritesThem) {

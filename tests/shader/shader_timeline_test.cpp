@@ -85,6 +85,12 @@ TEST_F(ShaderTimeline, RefusalsPointAtTheKey) {
   EXPECT_NE(error("[channels.image]\niChannel0 = \"buffer_c\"\n")
                 .find("image iChannel0 reads buffer_c, which this shader does not have"),
             std::string::npos);
+  for (const char* image : {"\"image\"", "\"self\""})
+    EXPECT_NE(error(std::string("[channels.image]\niChannel1 = ") + image + "\n")
+                  .find("t.toml:4:13: error: image iChannel1 reads the Image pass, which no "
+                        "channel can read"),
+              std::string::npos)
+        << image;
   EXPECT_NE(error("[channels.image]\niChannel4 = \"buffer_a\"\n").find("unknown key 'iChannel4'"),
             std::string::npos);
   EXPECT_NE(error("[video2]\n").find("unknown table"), std::string::npos);
