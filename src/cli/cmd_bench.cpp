@@ -353,25 +353,20 @@ int run_bench(const BenchOptions& o) {
       if (std::none_of(configs.begin(), configs.end(),
                        [&](const BenchConfig& k) { return bench::same_settings(k, *c); }))
         configs.push_back(*c);
-  if (!o.only.empty())
-    configs.erase(std::remove_if(configs.begin(), configs.end(),
-                                 [&](const BenchConfig& c) {
-                                   return std::none_of(o.only.begin(), o.only.end(),
-                                                       [&](const std::string& p) {
-                                                         return c.name.rfind(p, 0) == 0;
-                                                       });
-                                 }),
-                  configs.end());
+  // --only: the configurations whose names start with one of its prefixes.
+  auto keep_only = [&](std::vector<BenchConfig>& list) {
+    if (o.only.empty()) return;
+    list.erase(std::remove_if(list.begin(), list.end(),
+                              [&](const BenchConfig& c) {
+                                return std::none_of(
+                                    o.only.begin(), o.only.end(),
+                                    [&](const std::string& p) { return c.name.rfind(p, 0) == 0; });
+                              }),
+               list.end());
+  };
+  keep_only(configs);
   std::vector<BenchConfig> shader_configs = bench::shader_sample_configs();
-  if (!o.only.empty())
-    shader_configs.erase(std::remove_if(shader_configs.begin(), shader_configs.end(),
-                                        [&](const BenchConfig& c) {
-                                          return std::none_of(o.only.begin(), o.only.end(),
-                                                              [&](const std::string& p) {
-                                                                return c.name.rfind(p, 0) == 0;
-                                                              });
-                                        }),
-                         shader_configs.end());
+  keep_only(shader_configs);
   std::filesystem::create_directories(o.out);
 
   std::vector<BenchRow> rows;

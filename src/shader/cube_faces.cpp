@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sdf/cube_layout.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel {
@@ -21,24 +22,10 @@ ImageRGBA crop(const ImageRGBA& image, int x0, int y0, int size, bool flip) {
   return face;
 }
 
-// GL's direction through texel (x, y) of `face` (the spec's major-axis table, t down the rows).
+// GL's direction through texel (x, y) of `face`.
 glm::vec3 face_direction(int face, int x, int y, int size) {
-  const float s = 2.0f * (float(x) + 0.5f) / float(size) - 1.0f;
-  const float t = 2.0f * (float(y) + 0.5f) / float(size) - 1.0f;
-  switch (face) {
-    case 0:
-      return {1.0f, -t, -s};
-    case 1:
-      return {-1.0f, -t, s};
-    case 2:
-      return {s, 1.0f, t};
-    case 3:
-      return {s, -1.0f, -t};
-    case 4:
-      return {s, -t, 1.0f};
-    default:
-      return {-s, -t, -1.0f};
-  }
+  return cube_face_direction(face, 2.0f * (float(x) + 0.5f) / float(size) - 1.0f,
+                             2.0f * (float(y) + 0.5f) / float(size) - 1.0f);
 }
 
 // Bilinear sample of an equirect image at (u, v) in texels' units, wrapping around in u.

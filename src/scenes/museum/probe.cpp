@@ -1,43 +1,12 @@
 #include "scenes/museum/probe.h"
 
+#include "sdf/cube_layout.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::museum {
 namespace {
 
 using glm::vec3;
-
-// Face of a direction and its coordinates in [-1, 1] on that face (the GL cube map layout).
-struct FaceCoord {
-  int face;
-  float s, t;
-};
-
-FaceCoord face_of(const vec3& d) {
-  const float ax = dm::abs(d.x), ay = dm::abs(d.y), az = dm::abs(d.z);
-  if (ax >= ay && ax >= az)
-    return d.x > 0.0f ? FaceCoord{0, -d.z / ax, -d.y / ax} : FaceCoord{1, d.z / ax, -d.y / ax};
-  if (ay >= az)
-    return d.y > 0.0f ? FaceCoord{2, d.x / ay, d.z / ay} : FaceCoord{3, d.x / ay, -d.z / ay};
-  return d.z > 0.0f ? FaceCoord{4, d.x / az, -d.y / az} : FaceCoord{5, -d.x / az, -d.y / az};
-}
-
-vec3 direction_of(int face, float s, float t) {
-  switch (face) {
-    case 0:
-      return {1.0f, -t, -s};
-    case 1:
-      return {-1.0f, -t, s};
-    case 2:
-      return {s, 1.0f, t};
-    case 3:
-      return {s, -1.0f, -t};
-    case 4:
-      return {s, -t, 1.0f};
-    default:
-      return {-s, -t, -1.0f};
-  }
-}
 
 // The nearest box the ray o + d t (t > 0) enters, its t and the entered face's normal.
 bool hit_boxes(const vec3& o, const vec3& d, const std::vector<HallBox>& boxes, size_t& which,
@@ -80,7 +49,7 @@ ReflectionProbe render_probe(const vec3& centre, const std::vector<HallBox>& box
       for (int x = 0; x < PROBE_SIZE; ++x) {
         const float s = (2.0f * float(x) + 1.0f) / float(PROBE_SIZE) - 1.0f;
         const float t = (2.0f * float(y) + 1.0f) / float(PROBE_SIZE) - 1.0f;
-        const vec3 dv = direction_of(face, s, t);
+        const vec3 dv = cube_face_direction(face, s, t);
         const vec3 d = dv / dm::sqrt(glm::dot(dv, dv));
         size_t i = 0;
         float th;
@@ -97,7 +66,7 @@ ReflectionProbe render_probe(const vec3& centre, const std::vector<HallBox>& box
 }
 
 vec3 sample_probe(const ReflectionProbe& p, const vec3& d) {
-  const FaceCoord f = face_of(d);
+  const CubeFaceCoord f = cube_face_of(d);
   const float fx = (f.s * 0.5f + 0.5f) * float(PROBE_SIZE) - 0.5f;
   const float fy = (f.t * 0.5f + 0.5f) * float(PROBE_SIZE) - 0.5f;
   const float x0 = dm::floor(fx), y0 = dm::floor(fy);
