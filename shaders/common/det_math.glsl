@@ -26,22 +26,45 @@ const float DM_FLT_MIN = 1.17549435e-38;
 
 float dm_min(float a, float b) { return b < a ? b : a; }
 float dm_max(float a, float b) { return a < b ? b : a; }
-float dm_clamp(float x, float lo, float hi) { { precise float r_ = dm_min(dm_max(x, lo), hi); return r_; } }
-float dm_fract(float x) { { precise float r_ = x - floor(x); return r_; } }
-float dm_mod(float x, float y) { { precise float r_ = x - y * floor(x / y); return r_; } }
-float dm_mix(float x, float y, float a) { { precise float r_ = x * (1.0 - a) + y * a; return r_; } }
+float dm_clamp(float x, float lo, float hi) {
+  precise float r_ = dm_min(dm_max(x, lo), hi);
+  return r_;
+}
+float dm_fract(float x) {
+  precise float r_ = x - floor(x);
+  return r_;
+}
+float dm_mod(float x, float y) {
+  precise float r_ = x - y * floor(x / y);
+  return r_;
+}
+float dm_mix(float x, float y, float a) {
+  precise float r_ = x * (1.0 - a) + y * a;
+  return r_;
+}
 float dm_step(float edge, float x) { return x < edge ? 0.0 : 1.0; }
 float dm_smoothstep(float e0, float e1, float x) {
   if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   precise float t = dm_clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  { precise float r_ = t * t * (3.0 - 2.0 * t); return r_; }
+  precise float r_ = t * t * (3.0 - 2.0 * t);
+  return r_;
 }
-float dm_sign(float x) { { precise float r_ = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); return r_; } }
+float dm_sign(float x) {
+  precise float r_ = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+  return r_;
+}
 
-vec3 dm_mix(vec3 x, vec3 y, float a) { { precise vec3 r_ = x * (1.0 - a) + y * a; return r_; } }
-vec2 dm_mix(vec2 x, vec2 y, float a) { { precise vec2 r_ = x * (1.0 - a) + y * a; return r_; } }
+vec3 dm_mix(vec3 x, vec3 y, float a) {
+  precise vec3 r_ = x * (1.0 - a) + y * a;
+  return r_;
+}
+vec2 dm_mix(vec2 x, vec2 y, float a) {
+  precise vec2 r_ = x * (1.0 - a) + y * a;
+  return r_;
+}
 vec3 dm_clamp(vec3 v, float lo, float hi) {
-  { precise vec3 r_ = vec3(dm_clamp(v.x, lo, hi), dm_clamp(v.y, lo, hi), dm_clamp(v.z, lo, hi)); return r_; }
+  precise vec3 r_ = vec3(dm_clamp(v.x, lo, hi), dm_clamp(v.y, lo, hi), dm_clamp(v.z, lo, hi));
+  return r_;
 }
 
 // glm's vector helpers, in glm's order of operations (glm/detail/func_geometric.inl).
@@ -53,7 +76,10 @@ float dm_dot(vec3 a, vec3 b) {
   precise float r = a.x * b.x + a.y * b.y + a.z * b.z;
   return r;
 }
-float dm_dot(vec4 a, vec4 b) { { precise float r_ = (a.x * b.x + a.y * b.y) + (a.z * b.z + a.w * b.w); return r_; } }
+float dm_dot(vec4 a, vec4 b) {
+  precise float r_ = (a.x * b.x + a.y * b.y) + (a.z * b.z + a.w * b.w);
+  return r_;
+}
 float dm_length(vec2 v) {
   precise float r = sqrt(dm_dot(v, v));
   return r;
@@ -63,18 +89,34 @@ float dm_length(vec3 v) {
   return r;
 }
 // glm::normalize: v * (1 / sqrt(dot(v, v))).
-vec3 dm_normalize(vec3 v) { { precise vec3 r_ = v * (1.0 / sqrt(dm_dot(v, v))); return r_; } }
+vec3 dm_normalize(vec3 v) {
+  precise vec3 r_ = v * (1.0 / sqrt(dm_dot(v, v)));
+  return r_;
+}
 vec3 dm_cross(vec3 x, vec3 y) {
-  { precise vec3 r_ = vec3(x.y * y.z - y.y * x.z, x.z * y.x - y.z * x.x, x.x * y.y - y.x * x.y); return r_; }
+  precise vec3 r_ = vec3(x.y * y.z - y.y * x.z, x.z * y.x - y.z * x.x, x.x * y.y - y.x * x.y);
+  return r_;
 }
 // glm::reflect: I - N * dot(N, I) * 2.
-vec3 dm_reflect(vec3 i, vec3 n) { { precise vec3 r_ = i - n * dm_dot(n, i) * 2.0; return r_; } }
+vec3 dm_reflect(vec3 i, vec3 n) {
+  precise vec3 r_ = i - n * dm_dot(n, i) * 2.0;
+  return r_;
+}
 // glm::min/max/abs on vectors are per component.
-vec3 dm_max(vec3 v, float b) { { precise vec3 r_ = vec3(dm_max(v.x, b), dm_max(v.y, b), dm_max(v.z, b)); return r_; } }
-vec2 dm_max(vec2 v, float b) { { precise vec2 r_ = vec2(dm_max(v.x, b), dm_max(v.y, b)); return r_; } }
+vec3 dm_max(vec3 v, float b) {
+  precise vec3 r_ = vec3(dm_max(v.x, b), dm_max(v.y, b), dm_max(v.z, b));
+  return r_;
+}
+vec2 dm_max(vec2 v, float b) {
+  precise vec2 r_ = vec2(dm_max(v.x, b), dm_max(v.y, b));
+  return r_;
+}
 
 uint dm_float_bits(float x) { return floatBitsToUint(x); }
-float dm_bits_float(uint u) { { precise float r_ = uintBitsToFloat(u); return r_; } }
+float dm_bits_float(uint u) {
+  precise float r_ = uintBitsToFloat(u);
+  return r_;
+}
 
 // ---- sin, cos ----
 
@@ -103,14 +145,16 @@ QuadrantReduced dm_reduce_half_pi(float x) {
 
 float dm_sin_kernel(float r) {
   precise float z = r * r;
-  { precise float r_ = ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1) * z * r + r; return r_; }
+  precise float r_ = ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1) * z * r + r;
+  return r_;
 }
 float dm_cos_kernel(float r) {
   precise float z = r * r;
   precise float y =
       ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2) * z * z;
   y = y - 0.5 * z;
-  { precise float r_ = y + 1.0; return r_; }
+  precise float r_ = y + 1.0;
+  return r_;
 }
 
 float dm_sin(float x) {
@@ -152,7 +196,8 @@ float dm_atan_unit(float t) {
 float dm_atan(float x) {
   precise float a = abs(x);
   precise float r = a > 1.0 ? DM_HALF_PI - dm_atan_unit(1.0 / a) : dm_atan_unit(a);
-  { precise float r_ = x < 0.0 ? -r : r; return r_; }
+  precise float r_ = x < 0.0 ? -r : r;
+  return r_;
 }
 
 float dm_atan2(float y, float x) {
@@ -162,7 +207,8 @@ float dm_atan2(float y, float x) {
   precise float a = dm_atan_unit(lo / hi);
   if (ay > ax) a = DM_HALF_PI - a;
   if (x < 0.0) a = DM_PI - a;
-  { precise float r_ = y < 0.0 ? -a : a; return r_; }
+  precise float r_ = y < 0.0 ? -a : a;
+  return r_;
 }
 
 float dm_asin_kernel(float s) {
@@ -176,14 +222,19 @@ float dm_asin(float x) {
   precise float a = abs(x);
   precise float r =
       a > 0.5 ? DM_HALF_PI - 2.0 * dm_asin_kernel(sqrt(0.5 * (1.0 - a))) : dm_asin_kernel(a);
-  { precise float r_ = x < 0.0 ? -r : r; return r_; }
+  precise float r_ = x < 0.0 ? -r : r;
+  return r_;
 }
 
 float dm_acos(float x) {
   x = dm_clamp(x, -1.0, 1.0);
-  if (x < -0.5) { precise float r_ = DM_PI - 2.0 * dm_asin_kernel(sqrt(0.5 * (1.0 + x))); return r_; }
+  if (x < -0.5) {
+    precise float r_ = DM_PI - 2.0 * dm_asin_kernel(sqrt(0.5 * (1.0 + x)));
+    return r_;
+  }
   if (x > 0.5) { precise float r_ = 2.0 * dm_asin_kernel(sqrt(0.5 * (1.0 - x))); return r_; }
-  { precise float r_ = DM_HALF_PI - dm_asin_kernel(abs(x)) * dm_sign(x); return r_; }
+  precise float r_ = DM_HALF_PI - dm_asin_kernel(abs(x)) * dm_sign(x);
+  return r_;
 }
 
 // ---- exp, log, pow, tanh ----
@@ -197,7 +248,10 @@ const float DM_SQRT_HALF = 0.707106781186548;
 const float DM_LOG_OF_ZERO = -DM_FLT_MAX;
 const float DM_POW_ZERO_NEGATIVE = DM_FLT_MAX;
 
-float dm_exp2_int(int k) { { precise float r_ = dm_bits_float(uint(k + 127) << 23u); return r_; } }
+float dm_exp2_int(int k) {
+  precise float r_ = dm_bits_float(uint(k + 127) << 23u);
+  return r_;
+}
 
 float dm_exp(float x) {
   if (x < DM_EXP_MIN_ARG) return 0.0;
@@ -209,7 +263,8 @@ float dm_exp(float x) {
   precise float p = (((((1.9875691500e-4 * r + 1.3981999507e-3) * r + 8.3334519073e-3) * r +
                4.1665795894e-2) * r + 1.6666665459e-1) * r + 5.0000001201e-1) * z + r + 1.0;
   precise float k1 = floor(k * 0.5);
-  { precise float r_ = p * dm_exp2_int(int(k1)) * dm_exp2_int(int(k - k1)); return r_; }
+  precise float r_ = p * dm_exp2_int(int(k1)) * dm_exp2_int(int(k - k1));
+  return r_;
 }
 
 const float DM_TWO_POW_23 = 8388608.0;
@@ -248,7 +303,8 @@ float dm_pow(float x, float y) {
     if (y > 0.0) return 0.0;
     return y == 0.0 ? 1.0 : DM_POW_ZERO_NEGATIVE;
   }
-  { precise float r_ = dm_exp(y * dm_log(x)); return r_; }
+  precise float r_ = dm_exp(y * dm_log(x));
+  return r_;
 }
 
 const float DM_TANH_POLY_LIMIT = 0.625;
@@ -263,5 +319,6 @@ float dm_tanh(float x) {
     r = ((((-5.70498872745e-3 * z + 2.06390887954e-2) * z - 5.37397155531e-2) * z +
           1.33314422036e-1) * z - 3.33332819422e-1) * z * a + a;
   }
-  { precise float r_ = x < 0.0 ? -r : r; return r_; }
+  precise float r_ = x < 0.0 ? -r : r;
+  return r_;
 }

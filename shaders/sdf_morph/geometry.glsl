@@ -35,8 +35,14 @@ const float OBJECT_BOUND_MARGIN = 0.15;
 const float GROUP_BOUND_Y = 0.75;
 const float GROUP_BOUND_RADIUS = 1.2;
 
-vec3 objectBoundCenter() { { precise vec3 r_ = vec3(0.0, OBJECT_BOUND_Y, 0.0); return r_; } }
-vec3 groupBoundCenter() { { precise vec3 r_ = vec3(0.0, GROUP_BOUND_Y, 0.0); return r_; } }
+vec3 objectBoundCenter() {
+  precise vec3 r_ = vec3(0.0, OBJECT_BOUND_Y, 0.0);
+  return r_;
+}
+vec3 groupBoundCenter() {
+  precise vec3 r_ = vec3(0.0, GROUP_BOUND_Y, 0.0);
+  return r_;
+}
 
 vec3 toObjectSpace(vec3 p, MorphUniforms u) {
   precise vec3 lifted = p - vec3(0.0, PEDESTAL_HEIGHT, 0.0);
@@ -63,14 +69,16 @@ float mapMug(vec3 q) {
   precise vec3 h = m - vec3(HANDLE_X, HANDLE_Y, 0.0);
   precise float handle = sdCappedTorus(vec3(h.y, h.x, h.z), vec2(HANDLE_ARC_SIN, HANDLE_ARC_COS),
                                HANDLE_RADIUS, HANDLE_THICKNESS);
-  { precise float r_ = opSubtraction(cavity, opSmoothUnion(cup, handle, HANDLE_BLEND)); return r_; }
+  precise float r_ = opSubtraction(cavity, opSmoothUnion(cup, handle, HANDLE_BLEND));
+  return r_;
 }
 
 float mapObject(vec3 p, MorphUniforms u) {
   precise vec3 q = toObjectSpace(p, u);
   if (u.morph <= 0.0) { precise float r_ = mapTorus(q); return r_; }
   if (u.morph >= 1.0) { precise float r_ = mapMug(q); return r_; }
-  { precise float r_ = dm_mix(mapTorus(q), mapMug(q), u.morph); return r_; }
+  precise float r_ = dm_mix(mapTorus(q), mapMug(q), u.morph);
+  return r_;
 }
 
 float mapPedestal(vec3 p) {
@@ -84,21 +92,25 @@ float mapSceneBounded(vec3 p, MorphUniforms u, float margin, out bool exact) {
   precise float pedestal = mapPedestal(p);
   if (u.naive != 0) {
     exact = true;
-    { precise float r_ = opUnion(mapObject(p, u), pedestal); return r_; }
+    precise float r_ = opUnion(mapObject(p, u), pedestal);
+    return r_;
   }
   precise float bound = dm_length(p - objectBoundCenter()) - OBJECT_BOUND_RADIUS;
   if (bound > margin) {
     exact = pedestal <= bound;
-    { precise float r_ = opUnion(bound, pedestal); return r_; }
+    precise float r_ = opUnion(bound, pedestal);
+    return r_;
   }
   exact = true;
-  { precise float r_ = opUnion(mapObject(p, u), pedestal); return r_; }
+  precise float r_ = opUnion(mapObject(p, u), pedestal);
+  return r_;
 }
 
 float mapScene(vec3 p, MorphUniforms u, inout RayStats stats) {
   stats.sdf_evals += 1u;
   bool exact;
-  { precise float r_ = mapSceneBounded(p, u, OBJECT_BOUND_MARGIN, exact); return r_; }
+  precise float r_ = mapSceneBounded(p, u, OBJECT_BOUND_MARGIN, exact);
+  return r_;
 }
 
 bool isObject(vec3 p, MorphUniforms u) {

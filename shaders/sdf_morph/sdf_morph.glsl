@@ -61,7 +61,8 @@ vec2 intersectSphere(vec3 ro, vec3 rd, vec3 center, float radius) {
   precise float disc = radius * radius - dm_dot(q, q);
   if (disc < 0.0) { precise vec2 r_ = vec2(MISS_SPAN, -MISS_SPAN); return r_; }
   precise float s = sqrt(disc);
-  { precise vec2 r_ = vec2(-b - s, -b + s); return r_; }
+  precise vec2 r_ = vec2(-b - s, -b + s);
+  return r_;
 }
 
 float intersectFloor(vec3 ro, vec3 rd) {
@@ -75,18 +76,28 @@ float intersectFloor(vec3 ro, vec3 rd) {
 #include "common/relaxed_march.glsl"
 
 float hitEps(float eps_per_t, float t, MorphUniforms u) {
-  { precise float r_ = u.naive != 0 ? u.hit_eps : dm_max(MIN_HIT_EPS, eps_per_t * t); return r_; }
+  precise float r_ = u.naive != 0 ? u.hit_eps : dm_max(MIN_HIT_EPS, eps_per_t * t);
+  return r_;
 }
 float normalEps(float pixel_angle, float t, MorphUniforms u) {
-  { precise float r_ = u.naive != 0 ? u.normal_eps : dm_max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * t); return r_; }
+  precise float r_ =
+      u.naive != 0 ? u.normal_eps : dm_max(MIN_NORMAL_EPS, u.normal_eps * pixel_angle * t);
+  return r_;
 }
 vec2 groupSpan(vec3 ro, vec3 rd, MorphUniforms u) {
   if (u.naive != 0) { precise vec2 r_ = vec2(0.0, u.max_dist); return r_; }
-  { precise vec2 r_ = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS); return r_; }
+  precise vec2 r_ = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
+  return r_;
 }
-float surfaceBias(float eps) { { precise float r_ = dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps); return r_; } }
+float surfaceBias(float eps) {
+  precise float r_ = dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps);
+  return r_;
+}
 
-vec3 reflectDir(vec3 d, vec3 n) { { precise vec3 r_ = d - 2.0 * dm_dot(n, d) * n; return r_; } }
+vec3 reflectDir(vec3 d, vec3 n) {
+  precise vec3 r_ = d - 2.0 * dm_dot(n, d) * n;
+  return r_;
+}
 
 vec3 softBox(vec3 d, SoftBox box) {
   precise float c = dm_dot(d, box.dir);
@@ -96,7 +107,8 @@ vec3 softBox(vec3 d, SoftBox box) {
   precise float core = 1.0 - dm_smoothstep(-SOFTBOX_EDGE, SOFTBOX_EDGE, sd);
   precise float g = SOFTBOX_GLOW_FALLOFF * dm_max(sd, 0.0);
   precise float glow = SOFTBOX_GLOW / (1.0 + g * g);
-  { precise vec3 r_ = box.radiance * (core + glow); return r_; }
+  precise vec3 r_ = box.radiance * (core + glow);
+  return r_;
 }
 
 float ambientOcclusion(vec3 p, vec3 n, MorphUniforms u, inout RayStats stats) {
@@ -108,7 +120,8 @@ float ambientOcclusion(vec3 p, vec3 n, MorphUniforms u, inout RayStats stats) {
     occ += (h - d) * scale;
     scale *= AO_FALLOFF;
   }
-  { precise float r_ = dm_clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0); return r_; }
+  precise float r_ = dm_clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
+  return r_;
 }
 
 void occlusion(vec3 p, vec3 n, float bias, bool full, MorphUniforms u, inout RayStats stats,
@@ -127,7 +140,8 @@ vec3 shadeFloor(vec3 p, vec3 rd, float bias, bool full, MorphUniforms u, inout R
   occlusion(p, n, bias, full, u, stats, shadow, ao);
   precise vec3 col = diffuseLight(FLOOR_ALBEDO, n, shadow, ao, u);
   precise float fade = dm_smoothstep(FLOOR_FADE_START, FLOOR_FADE_END, dm_length(vec2(p.x, p.z)));
-  { precise vec3 r_ = dm_mix(col, environment(rd, u), fade); return r_; }
+  precise vec3 r_ = dm_mix(col, environment(rd, u), fade);
+  return r_;
 }
 
 vec3 shadePedestal(vec3 p, vec3 n, vec3 rd, float bias, bool full, MorphUniforms u,
@@ -136,7 +150,8 @@ vec3 shadePedestal(vec3 p, vec3 n, vec3 rd, float bias, bool full, MorphUniforms
   occlusion(p, n, bias, full, u, stats, shadow, ao);
   precise vec3 diffuse = diffuseLight(PEDESTAL_ALBEDO, n, shadow, ao, u);
   precise float f = schlick(dm_dot(n, -rd), PEDESTAL_F0);
-  { precise vec3 r_ = dm_mix(diffuse, environment(reflectDir(rd, n), u) * ao, f); return r_; }
+  precise vec3 r_ = dm_mix(diffuse, environment(reflectDir(rd, n), u) * ao, f);
+  return r_;
 }
 
 vec3 shadeObject(vec3 p, vec3 n, vec3 rd, vec3 reflection, float bias, bool full, MorphUniforms u,
@@ -145,7 +160,8 @@ vec3 shadeObject(vec3 p, vec3 n, vec3 rd, vec3 reflection, float bias, bool full
   occlusion(p, n, bias, full, u, stats, shadow, ao);
   precise vec3 diffuse = diffuseLight(u.base_color, n, shadow, ao, u);
   precise float f = schlick(dm_dot(n, -rd), u.reflectivity);
-  { precise vec3 r_ = dm_mix(diffuse, reflection, f); return r_; }
+  precise vec3 r_ = dm_mix(diffuse, reflection, f);
+  return r_;
 }
 
 vec3 traceReflection(vec3 p, vec3 n, vec3 r, float t_before, float eps_per_t, float pixel_angle,
@@ -161,14 +177,21 @@ vec3 traceReflection(vec3 p, vec3 n, vec3 r, float t_before, float eps_per_t, fl
       precise vec3 q = ro + r * t;
       precise float e = normalEps(pixel_angle, t_before + t, u);
       precise vec3 nq = calcNormal(q, e, u, stats);
-      if (isObject(q, u))
-        { precise vec3 r_ = shadeObject(q, nq, r, environment(reflectDir(r, nq), u), 0.0, false, u, stats); return r_; }
-      { precise vec3 r_ = shadePedestal(q, nq, r, 0.0, false, u, stats); return r_; }
+      if (isObject(q, u)) {
+        precise vec3 r_ =
+            shadeObject(q, nq, r, environment(reflectDir(r, nq), u), 0.0, false, u, stats);
+        return r_;
+      }
+      precise vec3 r_ = shadePedestal(q, nq, r, 0.0, false, u, stats);
+      return r_;
     }
   }
-  if (t_floor > 0.0 && t_floor < u.max_dist)
-    { precise vec3 r_ = shadeFloor(ro + r * t_floor, r, 0.0, false, u, stats); return r_; }
-  { precise vec3 r_ = environment(r, u); return r_; }
+  if (t_floor > 0.0 && t_floor < u.max_dist) {
+    precise vec3 r_ = shadeFloor(ro + r * t_floor, r, 0.0, false, u, stats);
+    return r_;
+  }
+  precise vec3 r_ = environment(r, u);
+  return r_;
 }
 
 vec3 environment(vec3 d, MorphUniforms u) {
@@ -179,7 +202,8 @@ vec3 environment(vec3 d, MorphUniforms u) {
   precise float b2 = b * b;
   col += BACKDROP_GLOW * (b2 * b2 * b2);
   for (int i = 0; i < SOFTBOX_COUNT; ++i) col += softBox(d, u.boxes[i]);
-  { precise vec3 r_ = u.env_intensity * col; return r_; }
+  precise vec3 r_ = u.env_intensity * col;
+  return r_;
 }
 
 float softShadow(vec3 ro, vec3 rd, MorphUniforms u, inout RayStats stats) {
@@ -206,7 +230,8 @@ float softShadow(vec3 ro, vec3 rd, MorphUniforms u, inout RayStats stats) {
     t += h;
   }
   res = dm_clamp(res, 0.0, 1.0);
-  { precise float r_ = res * res * (3.0 - 2.0 * res); return r_; }
+  precise float r_ = res * res * (3.0 - 2.0 * res);
+  return r_;
 }
 
 vec3 calcNormal(vec3 p, float e, MorphUniforms u, inout RayStats stats) {
@@ -228,24 +253,34 @@ vec3 sceneRadiance(Ray ray, MorphUniforms u, inout RayStats stats) {
     precise float t = march(ro, rd, t0, t1, u.max_steps, eps_per_t, 0.0, u, stats);
     if (t != NO_HIT) {
       precise vec3 p = ro + rd * t;
-      if (u.hit_mask != 0) { precise vec3 r_ = vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL); return r_; }
+      if (u.hit_mask != 0) {
+        precise vec3 r_ = vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL);
+        return r_;
+      }
       precise float e = normalEps(ray.pixel_angle, t, u);
       precise vec3 n = calcNormal(p, e, u, stats);
       precise float bias = surfaceBias(hitEps(eps_per_t, t, u));
       if (isObject(p, u)) {
         precise vec3 refl =
             traceReflection(p, n, reflectDir(rd, n), t, eps_per_t, ray.pixel_angle, u, stats);
-        { precise vec3 r_ = shadeObject(p, n, rd, refl, bias, true, u, stats); return r_; }
+        precise vec3 r_ = shadeObject(p, n, rd, refl, bias, true, u, stats);
+        return r_;
       }
-      { precise vec3 r_ = shadePedestal(p, n, rd, bias, true, u, stats); return r_; }
+      precise vec3 r_ = shadePedestal(p, n, rd, bias, true, u, stats);
+      return r_;
     }
   }
   if (u.hit_mask != 0) { precise vec3 r_ = vec3(HIT_ID_NONE); return r_; }
   if (floor_visible) {
     precise float bias = surfaceBias(hitEps(eps_per_t, t_floor, u));
-    { precise vec3 r_ = shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats); return r_; }
+    precise vec3 r_ = shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats);
+    return r_;
   }
-  { precise vec3 r_ = environment(rd, u); return r_; }
+  precise vec3 r_ = environment(rd, u);
+  return r_;
 }
 
-vec3 radiance(Ray ray, inout RayStats stats) { { precise vec3 r_ = sceneRadiance(ray, u_morph, stats); return r_; } }
+vec3 radiance(Ray ray, inout RayStats stats) {
+  precise vec3 r_ = sceneRadiance(ray, u_morph, stats);
+  return r_;
+}
