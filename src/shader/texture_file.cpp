@@ -13,6 +13,11 @@ ImageRGBA texture_texels(const StoredImage& stored, bool srgb) {
   const float scale = stored.bits == 8 ? 255.0f : stored.bits == 16 ? 65535.0f : 1.0f;
   const bool decode = srgb && integer;
   const int n = stored.channels;
+  // Every code's decoded value once (the same srgb_to_linear), instead of a pow per texel.
+  std::vector<float> decoded;
+  if (decode)
+    for (int code = 0; code <= int(scale); ++code)
+      decoded.push_back(srgb_to_linear(float(code) / scale));
   ImageRGBA image(stored.width, stored.height);
   for (size_t i = 0; i < size_t(stored.width) * size_t(stored.height); ++i) {
     const float* s = &stored.samples[i * size_t(n)];
@@ -23,8 +28,7 @@ ImageRGBA texture_texels(const StoredImage& stored, bool srgb) {
                  : std::array<float, 4>{s[0], s[0], s[0], scale};
     float* out = &image.pixels[4 * i];
     for (size_t c = 0; c < 4; ++c) {
-      out[c] = integer ? v[c] / scale : v[c];
-      if (decode && c < 3) out[c] = srgb_to_linear(out[c]);
+      out[c] = decode && c < 3 ? decoded[size_t(v[c])] : integer ? v[c] / scale : v[c];
     }
   }
   return image;

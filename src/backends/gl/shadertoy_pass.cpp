@@ -83,8 +83,7 @@ void ShadertoyRunner::set_uniforms(const ShaderPass& pass, size_t index, const F
 void ShadertoyRunner::run_pass(const ShaderPass& pass, size_t index, const FrameContext& ctx,
                                GLuint target, GLenum face, const std::vector<glm::vec2>& offsets) {
   const bool cube_face = face != GL_TEXTURE_2D;
-  const glm::ivec2 size =
-      cube_face ? glm::ivec2(project_->cube_size) : glm::ivec2(ctx.width, ctx.height);
+  const glm::ivec2 size = buffer_size(size_t(pass.kind));  // Image: the frame's, as a buffer's
   gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face, target, 0);
   const GLenum draw = GL_COLOR_ATTACHMENT0;

@@ -8,7 +8,6 @@
 #include "backends/gl/shadertoy_cube.h"
 #include "backends/gl/shadertoy_source.h"
 #include "shader/shadertoy_uniforms.h"
-#include "shader/texture_file.h"
 
 namespace sdfreel {
 
@@ -76,13 +75,15 @@ ShadertoyRunner::ShadertoyRunner(const GlApi& gl, const std::string& shader_dir,
       GLuint tex = 0;
       GLenum target = GL_TEXTURE_2D;
       glm::ivec2 size(0);
+      if ((b.kind == ChannelKind::Cubemap && !b.cube) ||
+          (b.kind == ChannelKind::Texture && !b.image))
+        throw std::logic_error("ShadertoyRunner: an image channel not read (load_channel_images)");
       if (b.kind == ChannelKind::Cubemap) {
-        if (!b.cube) throw std::logic_error("ShadertoyRunner: a cubemap channel without its faces");
         tex = cube_texture(gl_, b.cube->size, b.cube.get());
         target = GL_TEXTURE_CUBE_MAP;
         size = {b.cube->size, b.cube->size};
       } else if (b.kind == ChannelKind::Texture) {
-        ImageRGBA image = b.image ? *b.image : read_texture_file(b.files.at(0), b.srgb);
+        ImageRGBA image = *b.image;
         // Uploaded as read, the file's top row would be GL's row 0, at v = 0 (the bottom): the
         // picture upside down, as WebGL shows it without flipping. Shadertoy's vflip (its
         // default) flips it upright: the bottom row first.
@@ -248,9 +249,7 @@ bool ShadertoyRunner::restore(const BufferState& state) {
 
 void ShadertoyRunner::keep_checkpoint() {
   const int next = buffers_at_ + 1;
-  if (!checkpoints_ || !project_->has_feedback() || next % checkpoints_->every() != 0 ||
-      checkpoints_->has(next))
-    return;
+  if (!checkpoints_ || next % checkpoints_->every() != 0 || checkpoints_->has(next)) return;
   BufferState state{next, width_, height_, project_->cube_size, {}};
   gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);

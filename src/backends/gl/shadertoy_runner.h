@@ -31,7 +31,8 @@ class ShadertoyRunner {
 
   // The context of any frame, for replays and iTimeDelta.
   void set_frame_source(std::function<FrameContext(int)> source) { source_ = std::move(source); }
-  // Where the buffers' state is kept every N frames and restored from (nullptr: nowhere).
+  // Where the buffers' state is kept every N frames and restored from (nullptr: nowhere; given
+  // only to a shader with feedback, pipeline/shader_checkpoints.h).
   void set_checkpoints(std::shared_ptr<BufferCheckpoints> c) { checkpoints_ = std::move(c); }
   // The display-referred (or linear, [shader] output) RGBA image of ctx's frame, row 0 at the top.
   ImageRGBA render(const FrameContext& ctx);
@@ -58,7 +59,7 @@ class ShadertoyRunner {
                 GLenum face, const std::vector<glm::vec2>& offsets);
   void set_uniforms(const ShaderPass& pass, size_t index, const FrameContext& ctx, glm::ivec2 size);
   GLenum buffer_target(size_t kind) const;    // GL_TEXTURE_CUBE_MAP for Cube A
-  glm::ivec2 buffer_size(size_t kind) const;  // the frame's, or Cube A's faces
+  glm::ivec2 buffer_size(size_t kind) const;  // the frame's (Image's too), or Cube A's faces
   int buffer_faces(size_t kind) const { return kind == size_t(PassKind::CubeA) ? 6 : 1; }
   GLenum face_target(size_t kind, int face) const;
   GLint location(size_t index, const char* name) const;
