@@ -2,9 +2,9 @@
 # Regenerates the committed golden hashes (tests/golden/<scene>/<name>.framemd5) from the current
 # build. GOLDEN_BACKENDS="gl" also renders on the GL backend and writes
 # <name>.gl.framemd5 where a backend differs from the CPU's hashes (and removes it where it
-# agrees: the golden test then holds that backend to the CPU's file). GOLDEN_PER_MESA=1 with
-# GOLDEN_BACKENDS="gl" writes <name>.gl-mesa-X.Y.framemd5 instead, for this machine's Mesa, where
-# its llvmpipe differs from the files that apply otherwise (tests/gl/mesa_bits.h).
+# agrees: the golden test then holds that backend to the CPU's file). A <name>.gl.framemd5 names
+# the Mesa release it was made on ("#mesa: 22.3"); on another Mesa the golden test holds GL frames
+# that differ from it to the CPU's by Filament's rule (a mesh pass's rasteriser may change).
 # A user's shader's goldens (tests/golden/shader_<example>/) render on GL only, and their
 # <name>.framemd5 is the GL's. Look at the frames it leaves in build/golden/ ($BUILD_DIR/golden/ with BUILD_DIR)<scene>/<name>/out-<backend>/frames/ before
 # committing the result.
@@ -31,21 +31,13 @@ for timeline in tests/golden/*/*.toml; do
     # In place, so that a shader is found beside the timeline where it names it.
     (cd "$work" && "$build/sdfreel" render "$root/$timeline" --backend "$backend" --out "out-$backend")
     hashes=$work/out-$backend/frames.framemd5
-    if [[ $backend == "$first" && ($first == cpu || -z ${GOLDEN_PER_MESA:-}) ]]; then
+    if [[ $backend == "$first" ]]; then
       cp "$hashes" "$golden.framemd5"
-    elif [ -n "${GOLDEN_PER_MESA:-}" ]; then
-      mesa=$(grep -o '"[a-z]*\.mesa": "[0-9]*\.[0-9]*' "$work/out-$backend/manifest.json" | grep -o '[0-9]*\.[0-9]*$')
-      base=$golden.framemd5
-      [ -f "$golden.gl.framemd5" ] && base=$golden.gl.framemd5
-      if [ "$(data_lines "$hashes")" = "$(data_lines "$base")" ]; then
-        rm -f "$golden.gl-mesa-$mesa.framemd5"
-      else
-        cp "$hashes" "$golden.gl-mesa-$mesa.framemd5"
-      fi
     elif [ "$(data_lines "$hashes")" = "$(data_lines "$golden.framemd5")" ]; then
       rm -f "$golden.$backend.framemd5"
     else
-      cp "$hashes" "$golden.$backend.framemd5"
+      mesa=$(grep -o '"[a-z]*\.mesa": "[0-9]*\.[0-9]*' "$work/out-$backend/manifest.json" | grep -o '[0-9]*\.[0-9]*$')
+      { grep '^#' "$hashes"; echo "#mesa: $mesa"; data_lines "$hashes"; } >"$golden.$backend.framemd5"
     fi
     echo "look at: $work/out-$backend/frames/"
   done

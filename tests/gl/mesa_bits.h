@@ -3,8 +3,8 @@
 // backend on Mesa 22.3 (Debian 12, LLVM 15), and on Mesa 25.0 (Debian 13, LLVM 19) once every
 // expression that feeds a result goes through a precise local (det_math.glsl). On a Mesa not
 // listed here the bit-exact tests hold Filament's rule instead and print how many pixels differ,
-// and the golden test reads <name>.gl-mesa-X.Y.framemd5 where it exists (fur's shells, a mesh
-// pass, still rasterise differently on 25.0).
+// and the golden test holds a mesh pass's GL frames (fur's shells, which rasterise differently on
+// 25.0) to the CPU's by the same rule on a Mesa other than the one its .gl.framemd5 was made on.
 #include <string>
 
 #include "backends/gl/gl_backend.h"
