@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "cli/camera_clearance.h"
 #include "cli/camera_path_stats.h"
 #include "cli/commands_impl.h"
 #include "cli/output_folder.h"
@@ -28,6 +29,30 @@ void print_camera(const Timeline& tl, const SceneInfo& scene) {
       "at t = %.2f s\n",
       keys, keys == 1 ? "" : "s", interp_name(tl.camera.interp),
       tl.camera.constant_speed ? " at constant speed" : "", s.length, s.top_speed, s.top_speed_at);
+}
+
+// Warns (exit 0) where the eye of a frame is inside the scene's solids or cuts a surface open.
+void print_clearance(const Timeline& tl, const SceneInfo& scene, const std::vector<int>& frames) {
+  const CameraClearance c = camera_clearance(tl, scene, frames);
+  const double fps = tl.fps.value();
+  if (!c.scene_can_tell) {
+    std::printf("geometry:   not checked (%s cannot tell where its solids are)\n",
+                tl.shader_scene ? "a user's shader" : tl.scene.c_str());
+  } else if (c.inside.empty() && c.too_near.empty()) {
+    std::printf("geometry:   the camera stays clear of the scene's surfaces (%zu frames checked)\n",
+                frames.size());
+  } else {
+    if (!c.inside.empty())
+      std::printf(
+          "warning:    the camera is inside the scene's geometry at %s: those frames show "
+          "a surface from within; move the camera keys near these times\n",
+          frame_runs(c.inside, fps).c_str());
+    if (!c.too_near.empty())
+      std::printf(
+          "warning:    the camera comes within the near plane (%.2f units) of a surface at "
+          "%s: the surface is cut open there\n",
+          c.near_plane, frame_runs(c.too_near, fps).c_str());
+  }
 }
 
 void print_output(const Timeline& tl, const std::vector<int>& frames) {
@@ -75,6 +100,7 @@ int run_check(const RenderOptions& o) {
                                         .c_str(),
               quality_name(tl.quality));
   print_camera(tl, *scene);
+  print_clearance(tl, *scene, frames);
   print_output(tl, frames);
   std::printf("%s: ok, nothing written\n", tl.path.c_str());
   return 0;

@@ -5,6 +5,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,12 @@ class Scene {
   // For the OSMesa backend, after prepare(): the per-frame constants and textures its shader reads.
   // After prepare(): the distance functions its marches evaluate, scalar and in lanes.
   virtual std::vector<DistanceFunction> distance_functions() const { return {}; }
+  // After prepare_solids(): the distance from p to the solid surfaces a camera must stay out of
+  // (negative inside), for `check`'s warning; none where the scene cannot tell.
+  virtual std::optional<float> solid_distance(const glm::vec3& /*p*/) const { return std::nullopt; }
+  // The part of prepare() that solid_distance() needs: all of it, unless the scene's solids are
+  // cheaper to place (the museum's hall does not move; its prepare() renders a probe).
+  virtual void prepare_solids(const FrameContext& ctx) { prepare(ctx); }
   virtual std::vector<ShaderUniform> shader_uniforms() const { return {}; }
   virtual std::vector<ShaderTexture> shader_textures() const { return {}; }
   // Names the content of shader_textures(): equal keys, equal texels, so the backend uploads them

@@ -38,4 +38,8 @@ std::vector<DistanceFunction> LanternFestivalScene::distance_functions() const {
   };
 }
 
+std::optional<float> LanternFestivalScene::solid_distance(const glm::vec3& p) const {
+  return std::min(sdfWater(field_.lake, p), repeated(field_, p, true));
+}
+
 }  // namespace sdfreel::lantern_festival

@@ -48,6 +48,8 @@ class LanternFestivalScene : public Scene {
   void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override;
   // "sdfWater", "lanternDistance" and "repeated" (lantern_festival/distance_functions.cpp).
   std::vector<DistanceFunction> distance_functions() const override;
+  // The lake's surface and the nearest lanterns.
+  std::optional<float> solid_distance(const glm::vec3& p) const override;
   std::vector<ShaderUniform> shader_uniforms() const override;
   std::vector<ShaderTexture> shader_textures() const override;
   // The textures are generated from their seed alone.

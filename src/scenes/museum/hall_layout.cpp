@@ -1,5 +1,9 @@
 #include "scenes/museum/hall_layout.h"
 
+#include <algorithm>
+
+#include "sdf/sdf.h"
+
 namespace sdfreel::museum {
 namespace {
 
@@ -126,6 +130,14 @@ std::vector<HallBox> sun_occluders() {
         base + glm::vec3(PLINTH_HALF, PLINTH_H, PLINTH_HALF), STONE_ALBEDO, STONE_ROUGHNESS);
   }
   return b;
+}
+
+float hall_distance(const glm::vec3& p) {
+  static const std::vector<HallBox> boxes = hall_boxes();
+  float d = 1e30f;
+  for (const HallBox& b : boxes)
+    d = std::min(d, sdBox(p - 0.5f * (b.lo + b.hi), 0.5f * (b.hi - b.lo)));
+  return d;
 }
 
 }  // namespace sdfreel::museum

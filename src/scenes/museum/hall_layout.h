@@ -38,6 +38,9 @@ struct HallBox {
 // Every box of the hall, in a fixed order.
 std::vector<HallBox> hall_boxes();
 
+// Distance from p to the nearest box of the hall (negative inside one).
+float hall_distance(const glm::vec3& p);
+
 // The boxes that may stand between the sun and a sunlit point of the room: the west wall with its
 // window and mullions, the bench, the plinths (and their labels). The sun's shadow map draws them
 // (museum/sun_shadow.h).

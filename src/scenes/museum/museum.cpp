@@ -131,6 +131,10 @@ class MuseumScene : public Scene {
     return checksum64(words, sizeof words) | 1ull;  // never 0 ("unknown")
   }
   glm::vec3 radiance(const Ray& ray, RayStats&) const override { return sky(ray.dir); }
+  void prepare_solids(const FrameContext&) override {}  // the hall does not move
+  std::optional<float> solid_distance(const glm::vec3& p) const override {
+    return hall_distance(p);
+  }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan;
     plan.near_plane = 0.05f;

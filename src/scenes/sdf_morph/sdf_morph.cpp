@@ -8,6 +8,7 @@
 
 #include "scenes/common/param.h"
 #include "scenes/scene.h"
+#include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/lanes.h"
 #include "scenes/sdf_morph/render.h"
 #include "scenes/sdf_morph/uniforms.h"
@@ -45,6 +46,10 @@ class SdfMorphScene : public Scene {
   }
   std::vector<DistanceFunction> distance_functions() const override {
     return sdf_morph::morphDistanceFunctions(u_);
+  }
+  std::optional<float> solid_distance(const glm::vec3& p) const override {
+    bool exact;
+    return sdf_morph::mapSceneBounded(p, u_, sdf_morph::OBJECT_BOUND_MARGIN, exact);
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return sdf_morph::morph_shader_uniforms(u_);

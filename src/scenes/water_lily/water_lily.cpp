@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "scenes/scene.h"
+#include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/lanes.h"
 #include "scenes/water_lily/render.h"
 #include "scenes/water_lily/uniforms.h"
@@ -43,6 +44,9 @@ class WaterLilyScene : public Scene {
   }
   std::vector<DistanceFunction> distance_functions() const override {
     return water_lily::lilyDistanceFunctions(u_);
+  }
+  std::optional<float> solid_distance(const glm::vec3& p) const override {
+    return water_lily::mapNearest(p, u_, water_lily::BOUND_MARGIN).d;
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return water_lily::lily_shader_uniforms(u_);
