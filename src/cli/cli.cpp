@@ -16,6 +16,7 @@ int run_cli(int argc, char** argv) {
   add_still_command(app, status);
   add_sheet_command(app, status);
   add_check_command(app, status);
+  add_map_command(app, status);
   add_verify_command(app, status);
   add_encode_command(app, status);
   add_scenes_command(app, status);

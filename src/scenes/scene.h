@@ -74,6 +74,12 @@ struct SceneInfo {
   // The backend's image is display-referred sRGB (a Shadertoy shader's own output): the display
   // frame is that image as it is, the linear one its sRGB decoding; no [color] view applies.
   bool display_referred = false;
+  // For `sdfreel map`: the scene's up, along which the map looks down (light_beams' 2D world is
+  // the plane z = 0, seen along -z); the height its camera stays under (the museum's ceiling); and
+  // whether a view from the side shows anything but a wall or an edge.
+  glm::dvec3 map_up{0.0, 1.0, 0.0};
+  double map_ceiling = 1e9;
+  bool map_side_view = true;
 };
 
 // The poses the scene-wide tests render: the default camera, the same eye looking down steeply

@@ -105,6 +105,8 @@ SceneInfo light_beams_scene_info() {
   };
   info.default_camera = CameraPose{{0.0, 0.0, 1.0}, {0.0, 0.0, 0.0}, 90.0, 0.0};
   info.test_poses = test_poses(info.default_camera);
+  info.map_up = {0.0, 0.0, 1.0};  // the map looks at the plane from further away
+  info.map_side_view = false;     // the plane edge-on
   info.shader = "light_beams/light_beams.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new LightBeamsScene()); };
   return info;

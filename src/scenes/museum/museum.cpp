@@ -197,6 +197,8 @@ SceneInfo museum_scene_info() {
       "fog.";
   info.params = museum::params();
   info.default_camera = CameraPose{{3.5, 1.5, -2.2}, {-4.0, 1.9, 0.0}, 55.0, 0.0};
+  info.map_ceiling = museum::ROOM_H - 0.05;  // the map looks down from under the ceiling
+  info.map_side_view = false;                // a wall
   info.test_poses = museum::test_poses();
   info.shader = "museum/museum.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new museum::MuseumScene()); };
