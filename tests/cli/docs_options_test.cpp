@@ -26,7 +26,11 @@ bool mentions(const std::string& text, const std::string& name) {
 std::vector<std::string> commands() {
   const std::string help = run_sdfreel("--help").out;
   std::vector<std::string> out;
-  std::istringstream in(help.substr(help.find("Subcommands:")));
+  // CLI11 2.4 heads the list "Subcommands:", 2.6 "SUBCOMMANDS:".
+  size_t at = help.find("Subcommands:");
+  if (at == std::string::npos) at = help.find("SUBCOMMANDS:");
+  EXPECT_NE(at, std::string::npos) << help;
+  std::istringstream in(at == std::string::npos ? "" : help.substr(at));
   std::string line;
   std::getline(in, line);
   std::smatch m;
@@ -42,10 +46,12 @@ std::vector<std::vector<std::string>> options_of(const std::string& cmd) {
   std::string line;
   std::smatch m;
   while (std::getline(in, line)) {
-    if (!std::regex_search(line, m, std::regex("^  (-[-a-z0-9,]+)"))) continue;
+    // "  -o,--output TEXT" (CLI11 2.4), or "  -o,     --output TEXT" and
+    // "          --frames TEXT" (2.6).
+    if (!std::regex_search(line, m, std::regex("^ {2,12}(-[-a-z0-9]+(, *-[-a-z0-9]+)*)"))) continue;
     std::vector<std::string> names;
     std::istringstream parts(m[1].str());
-    for (std::string n; std::getline(parts, n, ',');) names.push_back(n);
+    for (std::string n; std::getline(parts, n, ',');) names.push_back(n.substr(n.find('-')));
     if (names.back() != "--help") out.push_back(names);
   }
   return out;
