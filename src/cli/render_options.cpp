@@ -13,6 +13,7 @@
 #endif
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
+#include "cli/time_overrides.h"
 #include "io/color.h"
 #include "pipeline/errors.h"
 #include "scenes/registry.h"
@@ -78,6 +79,11 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
                 "the output folder's name + -preview (other options still override)");
   cmd->add_option("--scale", o.scale, "both sides of the picture times this, e.g. 0.5")
       ->check(CLI::Range(0.001, 16.0));
+  cmd->add_option("--fps", o.fps, "frames per second, N or N/D, overrides [video] fps");
+  cmd->add_option("--duration", o.duration, "seconds of video, overrides [video] duration");
+  cmd->add_option("--time-range", o.time_range,
+                  "A-B: the frames whose video time lies in A..B seconds (inclusive), instead of "
+                  "--frames");
 }
 
 void add_no_video_option(CLI::App* cmd, RenderOptions& o) {
@@ -90,6 +96,7 @@ Timeline load_with_overrides(const RenderOptions& o) {
   Timeline tl = load_timeline(all_scenes(), o.timeline_path, &checker, &shaders);
   backend_for(tl, o.backend);  // refuses --backend cpu for a shader before anything is written
   apply_preview(o, tl);        // first, so that the options below override it
+  apply_time_overrides(o.fps, o.duration, tl);
   if (!o.resolution.empty()) {
     const Resolution r = parse_resolution_option(o.resolution);
     if (std::string problem = check_resolution(r.width, r.height); !problem.empty())
@@ -126,7 +133,11 @@ std::unique_ptr<Backend> timeline_backend(const Timeline& tl, const RenderOption
 
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o) {
   std::vector<int> frames;
-  if (o.frames.empty()) {
+  if (!o.frames.empty() && !o.time_range.empty())
+    throw UsageError("--frames and --time-range both select frames: give one of them");
+  if (!o.time_range.empty()) {
+    frames = frames_in_time_range(o.time_range, tl);
+  } else if (o.frames.empty()) {
     for (int i = 0; i < tl.frame_count(); ++i) frames.push_back(i);
   } else {
     frames = parse_frame_list(o.frames, tl.frame_count());

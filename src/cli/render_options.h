@@ -23,8 +23,11 @@ struct RenderOptions {
   int samples = 0;
   bool no_video = false;
   bool resume = false;
-  bool preview = false;  // --preview: quarter size, 1 sample, draft, into <dir>-preview
-  double scale = 0.0;    // --scale: both sides times this (0: as the timeline says)
+  bool preview = false;    // --preview: quarter size, 1 sample, draft, into <dir>-preview
+  double scale = 0.0;      // --scale: both sides times this (0: as the timeline says)
+  std::string fps;         // --fps: "N" or "N/D", overrides [video] fps
+  double duration = 0.0;   // --duration: seconds, overrides [video] duration (0: as it says)
+  std::string time_range;  // --time-range A-B: the frames in those seconds, instead of --frames
 };
 
 // The timeline and how its frames are rendered: backend, frames, shard, threads, resolution,

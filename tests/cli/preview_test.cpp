@@ -42,5 +42,46 @@ TEST(Preview, RendersTheWholeTimelineSmallIntoItsOwnFolderWithItsVideo) {
   EXPECT_EQ(m3.at("quality"), "final");
 }
 
+// --fps and --duration replace the timeline's: frame i is video time i / fps, the picture `still`
+// makes of the timeline at that time; the manifest records the new rate and count.
+TEST(Preview, FpsAndDurationOverrideTheTimelines) {
+  const std::string dir = scratch_dir("preview-fps");
+  write_file(dir + "/t.toml", small_timeline(20, "ffv1", "v.mkv"));  // 10 fps, 2 s
+  const RunResult r = run_sdfreel("render t.toml --fps 5 --duration 1.2 --out o", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(dir + "/o/manifest.json"));
+  EXPECT_EQ(m.at("fps"), "5/1");
+  EXPECT_EQ(m.at("frames").size(), 6u);  // 1.2 s at 5 fps
+  EXPECT_TRUE(fs::exists(dir + "/o/v.mkv")) << "the whole (overridden) timeline: its video";
+  // Frame 3 of the 5 fps render is t = 0.6 s: frame 6 of the 10 fps timeline.
+  const RunResult s = run_sdfreel("still t.toml --time 0.6 -o still.png", dir);
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(read_file(dir + "/still.png"), read_file(dir + "/o/frames/00003.png"));
+
+  for (const char* bad :
+       {"--fps 0", "--fps 30/0", "--fps fast", "--duration -1", "--duration 1e12"})
+    EXPECT_EQ(run_sdfreel(std::string("render t.toml --out bad ") + bad, dir).status, 2) << bad;
+  EXPECT_FALSE(fs::exists(dir + "/bad"));
+}
+
+// --time-range A-B renders the frames whose time lies in [A, B], as --frames would by number.
+TEST(Preview, TimeRangeSelectsFramesBySeconds) {
+  const std::string dir = scratch_dir("preview-range");
+  write_file(dir + "/t.toml", small_timeline(20, "ffv1", ""));  // 10 fps, frames 0..19
+  const RunResult r = run_sdfreel("check t.toml --time-range 0.5-1", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("this run renders 6 (5-10)"), std::string::npos) << r.out;
+  const RunResult tail = run_sdfreel("check t.toml --time-range 1.75-9", dir);
+  ASSERT_EQ(tail.status, 0) << tail.err;
+  EXPECT_NE(tail.out.find("this run renders 2 (18-19)"), std::string::npos) << tail.out;
+
+  const RunResult both = run_sdfreel("render t.toml --time-range 0-1 --frames 0-3", dir);
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("give one of them"), std::string::npos) << both.err;
+  for (const char* bad : {"3-4", "1-0.5", "x-1", "1"})
+    EXPECT_EQ(run_sdfreel(std::string("render t.toml --time-range ") + bad, dir).status, 2) << bad;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
 }  // namespace
 }  // namespace sdfreel::test
