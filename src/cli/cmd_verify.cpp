@@ -132,6 +132,10 @@ void add_verify_command(CLI::App& app, int& status) {
   auto o = std::make_shared<VerifyOptions>();
   CLI::App* cmd = app.add_subcommand("verify", "re-render and compare every frame with a manifest");
   add_frame_options(cmd, o->render);  // no --no-video or --resume: verify writes no render
+  // verify makes no render folder: its --out is where the images of differing frames go.
+  cmd->get_option("--out")->description(
+      "folder for the diff and rendered images of frames that differ (default: the manifest's "
+      "folder)");
   cmd->add_option(
          "--manifest", o->manifest,
          "manifest.json or framemd5 (sdfreel's or ffmpeg -f framemd5) of an earlier render")

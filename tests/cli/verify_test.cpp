@@ -122,6 +122,22 @@ TEST(VerifyFramemd5, GoesOnPastTheFirstDifferenceAndListsThemAll) {
   EXPECT_EQ(fast.err.find("frame 2 differs"), std::string::npos) << fast.err;
 }
 
+// verify's --out is where the images of differing frames go (render's is the render folder):
+// its help says so, and a differing frame's image lands there, not beside the manifest.
+TEST(VerifyFramemd5, OutIsTheFolderOfTheImagesOfDifferingFrames) {
+  const std::string dir = rendered("verify-out");
+  write_file(dir + "/bad.framemd5", with_hash_changed(read_file(dir + "/out/frames.framemd5"), 1));
+  const RunResult r = run_sdfreel("verify t.toml --manifest bad.framemd5 --out images", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_FALSE(fs::is_empty(dir + "/images")) << r.err;
+  const std::string help = run_sdfreel("verify --help").out;
+  const size_t at = help.find("--out");
+  ASSERT_NE(at, std::string::npos) << help;
+  const std::string line = help.substr(at, help.find('\n', at) - at);
+  EXPECT_NE(line.find("images of frames that differ"), std::string::npos) << line;
+  EXPECT_EQ(line.find("[output] dir"), std::string::npos) << line;
+}
+
 TEST(VerifyManifest, NamesEachSettingThatDiffersWithBothValues) {
   const std::string dir = rendered("verify-names-settings");
   const RunResult r =
