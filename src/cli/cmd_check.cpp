@@ -55,7 +55,7 @@ void print_clearance(const Timeline& tl, const SceneInfo& scene, const std::vect
   }
 }
 
-void print_output(const Timeline& tl, const std::vector<int>& frames) {
+void print_output(const Timeline& tl, const RenderOptions& o) {
   std::string files;
   if (tl.write_exr) files += "frames/NNNNN.exr, ";
   if (tl.write_png) files += "frames/NNNNN.png, ";
@@ -63,9 +63,10 @@ void print_output(const Timeline& tl, const std::vector<int>& frames) {
               files.c_str());
   if (tl.video.empty())
     std::printf("video:      none\n");
-  else if (int(frames.size()) != tl.frame_count())
+  else if (!makes_video(tl, o))
     std::printf(
-        "video:      none: a partial frame range writes no video (then `sdfreel encode`)\n");
+        "video:      none: a partial frame range writes no video (then `sdfreel encode`, or "
+        "--video NAME)\n");
   else if (tl.codec == "h264")
     std::printf("video:      %s/%s (h264, crf %d)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.crf);
   else
@@ -101,7 +102,7 @@ int run_check(const RenderOptions& o) {
               quality_name(tl.quality));
   print_camera(tl, *scene);
   print_clearance(tl, *scene, frames);
-  print_output(tl, frames);
+  print_output(tl, o);
   std::printf("%s: ok, nothing written\n", tl.path.c_str());
   return 0;
 }

@@ -7,6 +7,8 @@
 #include "cli/commands_impl.h"
 #include "cli/manifest_input.h"
 #include "cli/output_folder.h"
+#include "cli/time_overrides.h"
+#include "cli/video_choice.h"
 #include "io/video_encoder.h"
 #include "timeline/rules.h"
 
@@ -19,34 +21,10 @@ struct EncodeOptions {
   int crf = 18;
 };
 
-Rational parse_fps(const std::string& s) {
-  Rational r;
-  long long n = 0, d = 1;
-  char slash = 0, extra = 0;
-  const int got = std::sscanf(s.c_str(), "%lld%c%lld%c", &n, &slash, &d, &extra);
-  if (!((got == 1) || (got == 3 && slash == '/')) || n <= 0 || d <= 0)
-    throw UsageError("--fps '" + s + "': expected a positive integer or N/D");
-  r.num = n;
-  r.den = got == 3 ? d : 1;
-  return r;
-}
-
-// Without --codec the container names it (.mp4 h264, .mkv ffv1, .mov prores). Where the render's
-// own codec fits the container as well and is another one (h264 in a .mkv), the name is
-// ambiguous: refused rather than writing a codec the user may not expect over a file of the other.
-std::string codec_of_output(const std::string& output, const std::string& render_codec) {
-  const std::string usual = usual_codec(output);
-  if (usual.empty() || usual == render_codec || !container_holds(output, render_codec))
-    return usual.empty() ? render_codec : usual;
-  throw UsageError("-o " + output + ": this container holds " + usual + " or the render's codec " +
-                   render_codec + "; say which with --codec " + usual + " or --codec " +
-                   render_codec);
-}
-
 int run_encode(const EncodeOptions& o) {
   const std::optional<Manifest> manifest = read_manifest_argument(o.dir + "/manifest.json");
   const ManifestHeader& h = manifest->header;
-  const std::string codec = o.codec.empty() ? codec_of_output(o.output, h.codec) : o.codec;
+  const std::string codec = o.codec.empty() ? codec_of_output(o.output, h.codec, "-o") : o.codec;
   if (!is_known_codec(codec))
     throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
   // The container must hold the codec: refused here, before a temporary video is created.
@@ -57,7 +35,7 @@ int run_encode(const EncodeOptions& o) {
     throw UsageError("h264 (yuv420p) needs an even width and height; the frames are " +
                      std::to_string(h.width) + "x" + std::to_string(h.height));
   Rational fps{h.fps_num, h.fps_den};
-  if (!o.fps.empty()) fps = parse_fps(o.fps);
+  if (!o.fps.empty()) fps = parse_fps_option(o.fps);
   // Every frame of the timeline must be there: a video with a hole is not the timeline's video.
   for (int i = 0; i < h.frame_count; ++i)
     if (!manifest->frames.count(i)) {

@@ -62,8 +62,7 @@ void remove_foreign_render(const std::string& dir, const Manifest& old) {
 int run_render(const RenderOptions& o) {
   Timeline tl = load_with_overrides(o);
   const std::vector<int> frames = selected_frames(tl, o);
-  const bool whole = int(frames.size()) == tl.frame_count();
-  const bool want_video = !tl.video.empty() && whole;
+  const bool want_video = makes_video(tl, o);
   // Everything that can fail on bad input or a missing backend happens before the first write.
   FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
@@ -103,10 +102,10 @@ int run_render(const RenderOptions& o) {
     else
       previous = existing;  // frames on disk are still checked against their hashes below
   }
-  if (!tl.video.empty() && !whole)
+  if (!tl.video.empty() && !want_video)
     std::fprintf(stderr,
-                 "note: a partial frame range writes no video; run `sdfreel encode %s -o VIDEO` "
-                 "once every frame is rendered\n",
+                 "note: a partial frame range writes no video (unless --video names one); run "
+                 "`sdfreel encode %s -o VIDEO` once every frame is rendered\n",
                  dir.c_str());
 
   std::unique_ptr<VideoEncoder> encoder;
@@ -175,7 +174,7 @@ int run_render(const RenderOptions& o) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const char* no_video = tl.video.empty() ? (o.no_video ? "no video (--no-video)" : "no video")
-                         : !whole         ? "no video (a partial frame range)"
+                         : !want_video    ? "no video (a partial frame range)"
                                           : nullptr;
   std::fprintf(
       stderr, "done: %zu frame%s in %s (%zu rendered, %d kept from before) in %.1f s%s%s\n",

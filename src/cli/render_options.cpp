@@ -14,6 +14,7 @@
 #include "cli/frame_range.h"
 #include "cli/option_numbers.h"
 #include "cli/time_overrides.h"
+#include "cli/video_choice.h"
 #include "io/color.h"
 #include "pipeline/errors.h"
 #include "scenes/registry.h"
@@ -52,7 +53,25 @@ void apply_preview(const RenderOptions& o, Timeline& tl) {
   tl.out_dir += "-preview";  // never over the real render's frames (--out still names the folder)
 }
 
+// --video NAME: a file name in the output folder, its codec the container's.
+void apply_video_option(const RenderOptions& o, Timeline& tl) {
+  if (o.no_video) throw UsageError("--video and --no-video: give one of them");
+  if (o.video.find('/') != std::string::npos)
+    throw UsageError("--video " + o.video +
+                     ": a file name in the output folder (--out names the folder)");
+  tl.codec = codec_of_output(o.video, tl.codec, "--video");
+  if (std::string problem = check_video_name(o.video, tl.codec); !problem.empty())
+    throw UsageError("--video: " + problem);
+  tl.video = o.video;
+}
+
 }  // namespace
+
+bool makes_video(const Timeline& tl, const RenderOptions& o) {
+  // A part of the frames gets a video only when --video asks (else `sdfreel encode` later).
+  return !tl.video.empty() &&
+         (!o.video.empty() || selected_frames(tl, o).size() == size_t(tl.frame_count()));
+}
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
   add_frame_options(cmd, o);
@@ -88,6 +107,10 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
 
 void add_no_video_option(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--no-video", o.no_video, "write frames and hashes but no video");
+  cmd->add_option("--video", o.video,
+                  "NAME: the video's file in the output folder instead of [output] video, its "
+                  "codec from the container; with --frames, --time-range or --shard, a video of "
+                  "just those frames");
 }
 
 Timeline load_with_overrides(const RenderOptions& o) {
@@ -111,10 +134,9 @@ Timeline load_with_overrides(const RenderOptions& o) {
   }
   if (!o.quality.empty()) tl.quality = *parse_quality(o.quality);
   if (!o.out.empty()) tl.out_dir = o.out;
+  if (!o.video.empty()) apply_video_option(o, tl);
   if (o.no_video) tl.video.clear();
-  // A render writes its video only when it renders every frame (a part leaves it to encode).
-  const bool whole = selected_frames(tl, o).size() == size_t(tl.frame_count());
-  validate_overrides(tl, whole);
+  validate_overrides(tl, makes_video(tl, o));
   return tl;
 }
 

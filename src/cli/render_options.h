@@ -28,12 +28,13 @@ struct RenderOptions {
   std::string fps;         // --fps: "N" or "N/D", overrides [video] fps
   double duration = 0.0;   // --duration: seconds, overrides [video] duration (0: as it says)
   std::string time_range;  // --time-range A-B: the frames in those seconds, instead of --frames
+  std::string video;       // --video NAME: instead of [output] video; a partial range gets one too
 };
 
 // The timeline and how its frames are rendered: backend, frames, shard, threads, resolution,
 // samples, quality, out, preview and scale (render, verify, check).
 void add_frame_options(CLI::App* cmd, RenderOptions& o);
-// --no-video (render, check: verify makes no video).
+// --no-video and --video (render, check: verify makes no video).
 void add_no_video_option(CLI::App* cmd, RenderOptions& o);
 // add_frame_options, --no-video and --resume.
 void add_render_options(CLI::App* cmd, RenderOptions& o);
@@ -47,6 +48,9 @@ Timeline load_with_overrides(const RenderOptions& o);
 // The backend --backend names, or the timeline's default: gl for a user's shader (it has no CPU
 // twin; --backend cpu is a UsageError for it), cpu for a built-in scene.
 std::string backend_for(const Timeline& tl, const std::string& asked);
+// Whether this run writes a video: the timeline (or --video) names one and every frame is
+// rendered, or --video asks for one of a part.
+bool makes_video(const Timeline& tl, const RenderOptions& o);
 // The frames to render: --frames and --shard applied to the timeline's frame range.
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
 // A backend by name (egl and osmesa: the GL backend on that platform); UsageError for unknown

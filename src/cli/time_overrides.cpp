@@ -28,21 +28,20 @@ bool number(const std::string& s, double& out) {
   }
 }
 
-Rational parse_fps_option(const std::string& text) {
+}  // namespace
+
+Rational parse_fps_option(const std::string& text, const std::string& option) {
   Rational fps{0, 1};
   const size_t slash = text.find('/');
   const bool ok = slash == std::string::npos ? whole(text, fps.num)
                                              : whole(text.substr(0, slash), fps.num) &&
                                                    whole(text.substr(slash + 1), fps.den);
   if (!ok || fps.num <= 0 || fps.den <= 0 || fps.num > 1000000000 || fps.den > 1000000)
-    throw UsageError("--fps " + text +
-                     ": frames per second are a whole number or N/D, e.g. 24 "
-                     "or 30000/1001");
+    throw UsageError(option + " " + text +
+                     ": frames per second are a whole number or N/D, e.g. 24 or 30000/1001");
   const int64_t g = std::gcd(fps.num, fps.den);
   return {fps.num / g, fps.den / g};
 }
-
-}  // namespace
 
 void apply_time_overrides(const std::string& fps, double duration, Timeline& tl) {
   if (!fps.empty()) tl.fps = parse_fps_option(fps);

@@ -9,6 +9,9 @@
 
 namespace sdfreel {
 
+// "N" or "N/D" frames per second, reduced; throws UsageError naming `option` otherwise.
+Rational parse_fps_option(const std::string& text, const std::string& option = "--fps");
+
 // Applies --fps ("N" or "N/D") and --duration (seconds, > 0) where given; throws UsageError
 // naming the option for a bad value or more frames than a timeline may have.
 void apply_time_overrides(const std::string& fps, double duration, Timeline& tl);

@@ -83,5 +83,40 @@ TEST(Preview, TimeRangeSelectsFramesBySeconds) {
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
+// A partial range writes no video unless --video names one: then a video of just those frames,
+// in the folder under that name, while the timeline's own video is not made.
+TEST(Preview, VideoNamesAVideoOfAPartialRange) {
+  const std::string dir = scratch_dir("preview-video");
+  write_file(dir + "/t.toml", small_timeline(20, "h264", "v.mp4"));  // 10 fps, frames 0..19
+  const RunResult plain = run_sdfreel("render t.toml --time-range 0.5-1 --out a", dir);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_FALSE(fs::exists(dir + "/a/v.mp4"));
+  EXPECT_NE(plain.err.find("no video (a partial frame range)"), std::string::npos) << plain.err;
+
+  const RunResult r = run_sdfreel("render t.toml --time-range 0.5-1 --video clip.mp4 --out b", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/b/clip.mp4")) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/b/v.mp4"));
+  const auto m = nlohmann::json::parse(read_file(dir + "/b/manifest.json"));
+  EXPECT_EQ(m.at("frames").size(), 6u);
+  if (have_tool("ffprobe")) {
+    const RunResult p =
+        run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+            "stream=codec_name,nb_read_frames -of csv=p=0 b/clip.mp4",
+            dir);
+    EXPECT_EQ(p.out, "h264,6\n") << p.err;
+  }
+  const RunResult c = run_sdfreel("check t.toml --time-range 0.5-1 --video clip.mp4", dir);
+  EXPECT_NE(c.out.find("video:      out/clip.mp4 (h264, crf 18)"), std::string::npos) << c.out;
+  // .mkv holds ffv1 (its usual codec) and the timeline's h264 alike: say which, as encode does.
+  const RunResult both = run_sdfreel("render t.toml --video clip.mkv --out bad", dir);
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("set [output] codec"), std::string::npos) << both.err;
+
+  for (const char* bad : {"--video x.avi", "--video sub/clip.mkv", "--video c.mp4 --no-video"})
+    EXPECT_EQ(run_sdfreel(std::string("render t.toml --out bad ") + bad, dir).status, 2) << bad;
+  EXPECT_FALSE(fs::exists(dir + "/bad"));
+}
+
 }  // namespace
 }  // namespace sdfreel::test
