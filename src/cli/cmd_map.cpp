@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "cli/commands_impl.h"
+#include "cli/quick_look_options.h"
 #include "draw/path_map.h"
 
 namespace sdfreel {
@@ -53,12 +54,7 @@ int run_map(const MapOptions& o) {
                      std::to_string(tl.duration) + " s)");
   const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
-  // A preview's settings unless asked otherwise: one sample, draft quality.
-  if (!ro.samples) {
-    tl.samples = 1;
-    tl.adaptive.enabled = false;
-  }
-  if (ro.quality.empty()) tl.quality = Quality::Draft;
+  apply_quick_look(ro, tl);
 
   const draw::PathMarks marks = path_marks(tl, *scene);
   // The views show where the camera goes and what its keys look at.
@@ -109,13 +105,7 @@ void add_map_command(CLI::App& app, int& status) {
       ->check(CLI::Range(64, 8192));
   cmd->add_option("--time", o->time,
                   "video time (s) whose scene the map shows (default 0: the first frame's)");
-  add_backend_options(cmd, o->render);
-  cmd->add_option("--threads", o->render.threads, "worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--samples", o->render.samples, "samples per pixel (default 1)")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--quality", o->render.quality, "draft (default) | final | reference")
-      ->check(CLI::IsMember({"draft", "final", "reference"}));
+  add_quick_look_options(cmd, o->render);
   cmd->callback([o, &status] { status = run_map(*o); });
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "cli/commands_impl.h"
+#include "cli/quick_look_options.h"
 #include "draw/contact_sheet.h"
 
 namespace sdfreel {
@@ -35,12 +36,7 @@ int run_sheet(const SheetOptions& o) {
   RenderOptions ro = o.render;
   ro.no_video = true;  // tiles are never encoded, so h264's even-size rule does not apply
   Timeline tl = load_with_overrides(ro);
-  // A preview's settings unless asked otherwise: one sample, draft quality, the tile's size.
-  if (!ro.samples) {
-    tl.samples = 1;
-    tl.adaptive.enabled = false;
-  }
-  if (ro.quality.empty()) tl.quality = Quality::Draft;
+  apply_quick_look(ro, tl);  // and the tile's size:
   const double aspect = double(tl.height) / double(tl.width);
   tl.width = o.tile_width;
   tl.height = std::max(2, int(std::lround(o.tile_width * aspect)));
@@ -84,13 +80,7 @@ void add_sheet_command(CLI::App& app, int& status) {
       ->check(CLI::Range(16, 4096));
   cmd->add_option("--frames", o->render.frames,
                   "spread over these frames only, e.g. 0-99 (default: the whole timeline)");
-  add_backend_options(cmd, o->render);
-  cmd->add_option("--threads", o->render.threads, "worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--samples", o->render.samples, "samples per pixel (default 1)")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--quality", o->render.quality, "draft (default) | final | reference")
-      ->check(CLI::IsMember({"draft", "final", "reference"}));
+  add_quick_look_options(cmd, o->render);
   cmd->callback([o, &status] { status = run_sheet(*o); });
 }
 
