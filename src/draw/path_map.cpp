@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "draw/bitmap_font.h"
 
@@ -38,13 +39,26 @@ struct Panel {
     line(a, b, width + 2.0f, kShadow);
     line(a, b, width, colour);
   }
-  void dot(const glm::dvec3& p, float radius, Rgb colour, const std::string& label = "") const {
+  // A dot; with a label beside it, moved down a line at a time past the labels in `taken` (keys
+  // that project close together, as from the side, would otherwise print over each other).
+  void dot(const glm::dvec3& p, float radius, Rgb colour, const std::string& label = "",
+           std::vector<glm::ivec4>* taken = nullptr) const {
     glm::dvec2 q;
     if (!at(p, q)) return;
     c.disc(float(q.x), float(q.y), radius + 1.5f, kShadow);
     c.disc(float(q.x), float(q.y), radius, colour);
     if (label.empty()) return;
-    const int tx = int(q.x) + int(radius) + 3, ty = int(q.y) - GLYPH_HEIGHT / 2;
+    const int tx = int(q.x) + int(radius) + 3, w = Canvas::text_width(label);
+    int ty = int(q.y) - GLYPH_HEIGHT / 2;
+    for (bool moved = true; moved && taken;) {
+      moved = false;
+      for (const glm::ivec4& r : *taken)
+        if (tx < r.z && r.x < tx + w && ty < r.w && r.y < ty + GLYPH_HEIGHT) {
+          ty = r.w + 1;
+          moved = true;
+        }
+    }
+    if (taken) taken->push_back({tx, ty, tx + w, ty + GLYPH_HEIGHT});
     for (int dy = -1; dy <= 1; ++dy)  // a dark halo under the text
       for (int dx = -1; dx <= 1; ++dx) c.text(tx + dx, ty + dy, label, kShadow);
     c.text(tx, ty, label, colour);
@@ -101,6 +115,7 @@ void draw_marks(const Panel& p, const PathMarks& m) {
     p.stroke(s.position, s.position + s.forward * look, 1.5f, kLook);
     p.dot(s.position, 2.0f, kPath);
   }
+  std::vector<glm::ivec4> labels;  // x0, y0, x1, y1 of each key's label
   for (size_t i = 0; i < m.keys.size(); ++i) {
     // Keys at one place (a loop that ends where it starts) share a dot: "0 s, 10 s".
     bool seen = false;
@@ -111,7 +126,7 @@ void draw_marks(const Panel& p, const PathMarks& m) {
       if (m.keys[j].position == m.keys[i].position) label += ", " + seconds_label(m.keys[j].t);
     const Rgb colour = i == 0 ? kStart : i + 1 == m.keys.size() ? kEnd : kKey;
     p.stroke(m.keys[i].position, m.keys[i].position + m.keys[i].forward * look, 2.0f, kLook);
-    p.dot(m.keys[i].position, 4.5f, colour, label);
+    p.dot(m.keys[i].position, 4.5f, colour, label, &labels);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "draw/path_map.h"
@@ -92,6 +93,27 @@ TEST(PathMap, DrawsTheKeysWhereTheyProject) {
   EXPECT_LT(b.b, 0.5f);
   const Rgb far = c.at(x0 + 2, y0 + 2);  // the scene's own pixel where nothing is drawn
   EXPECT_EQ(far.b, 1.0f);
+}
+
+// Keys that project close together (as from the side) get their labels one under another, not
+// printed over each other: the last key's red label lies below the first key's green one.
+TEST(PathMap, LabelsOfNearbyKeysDoNotOverlap) {
+  const MapView v = view_from_above(kPath, {0, 1, 0}, 1e9, 320);
+  PathMarks m;
+  m.path = kPath;
+  m.keys = {{0.0, {0.3, 0.3, 3.9}, {0, 0, 1}}, {12.0, {0.3, 0.3, 3.9001}, {0, 0, 1}}};
+  const Canvas c = path_map({{v, test::solid_frame(v.width, v.height, 0, 0, 0)}}, m, "t");
+  const glm::dvec2 q = project(v, m.keys[0].position) + glm::dvec2(8, 8 + 13 + 8);
+  int green_bottom = -1, red_top = 1 << 30;
+  for (int y = int(q.y) - 20; y < int(q.y) + 40; ++y)
+    for (int x = int(q.x) + 8; x < int(q.x) + 60; ++x) {
+      const Rgb p = c.at(x, y);
+      if (p.g > 0.8f && p.r < 0.5f) green_bottom = std::max(green_bottom, y);
+      if (p.r > 0.9f && p.g < 0.5f) red_top = std::min(red_top, y);
+    }
+  ASSERT_GE(green_bottom, 0);
+  ASSERT_LT(red_top, 1 << 30);
+  EXPECT_GT(red_top, green_bottom);
 }
 
 }  // namespace
