@@ -55,7 +55,7 @@ void print_clearance(const Timeline& tl, const SceneInfo& scene, const std::vect
   }
 }
 
-void print_output(const Timeline& tl, const RenderOptions& o) {
+void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<int>& frames) {
   std::string files;
   if (tl.write_exr) files += "frames/NNNNN.exr, ";
   if (tl.write_png) files += "frames/NNNNN.png, ";
@@ -63,7 +63,7 @@ void print_output(const Timeline& tl, const RenderOptions& o) {
               files.c_str());
   if (tl.video.empty())
     std::printf("video:      none\n");
-  else if (!makes_video(tl, o))
+  else if (!makes_video(tl, o, frames.size()))
     std::printf(
         "video:      none: a partial frame range writes no video (then `sdfreel encode`, or "
         "--video NAME)\n");
@@ -102,7 +102,7 @@ int run_check(const RenderOptions& o) {
               quality_name(tl.quality));
   print_camera(tl, *scene);
   print_clearance(tl, *scene, frames);
-  print_output(tl, o);
+  print_output(tl, o, frames);
   std::printf("%s: ok, nothing written\n", tl.path.c_str());
   return 0;
 }

@@ -32,7 +32,6 @@ draw::PathMarks path_marks(const Timeline& tl, const SceneInfo& scene) {
   draw::PathMarks m;
   for (int f = 0; f < tl.frame_count(); ++f)
     m.path.push_back(tl.camera.sample(tl.video_time(f), scene.default_camera).position);
-  if (m.path.empty()) m.path.push_back(scene.default_camera.position);
   for (const CameraKey& k : tl.camera.keys) m.keys.push_back(path_point(tl, scene, k.t));
   if (tl.camera.keys.empty()) m.keys.push_back(path_point(tl, scene, 0.0));
   for (int s = 1; s < tl.duration; ++s) m.seconds.push_back(path_point(tl, scene, s));

@@ -62,7 +62,7 @@ void remove_foreign_render(const std::string& dir, const Manifest& old) {
 int run_render(const RenderOptions& o) {
   Timeline tl = load_with_overrides(o);
   const std::vector<int> frames = selected_frames(tl, o);
-  const bool want_video = makes_video(tl, o);
+  const bool want_video = makes_video(tl, o, frames.size());
   // Everything that can fail on bad input or a missing backend happens before the first write.
   FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());

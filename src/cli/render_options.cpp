@@ -67,10 +67,9 @@ void apply_video_option(const RenderOptions& o, Timeline& tl) {
 
 }  // namespace
 
-bool makes_video(const Timeline& tl, const RenderOptions& o) {
+bool makes_video(const Timeline& tl, const RenderOptions& o, size_t selected) {
   // A part of the frames gets a video only when --video asks (else `sdfreel encode` later).
-  return !tl.video.empty() &&
-         (!o.video.empty() || selected_frames(tl, o).size() == size_t(tl.frame_count()));
+  return !tl.video.empty() && (!o.video.empty() || selected == size_t(tl.frame_count()));
 }
 
 void add_render_options(CLI::App* cmd, RenderOptions& o) {
@@ -136,7 +135,7 @@ Timeline load_with_overrides(const RenderOptions& o) {
   if (!o.out.empty()) tl.out_dir = o.out;
   if (!o.video.empty()) apply_video_option(o, tl);
   if (o.no_video) tl.video.clear();
-  validate_overrides(tl, makes_video(tl, o));
+  validate_overrides(tl, makes_video(tl, o, selected_frames(tl, o).size()));
   return tl;
 }
 

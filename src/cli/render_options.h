@@ -48,9 +48,9 @@ Timeline load_with_overrides(const RenderOptions& o);
 // The backend --backend names, or the timeline's default: gl for a user's shader (it has no CPU
 // twin; --backend cpu is a UsageError for it), cpu for a built-in scene.
 std::string backend_for(const Timeline& tl, const std::string& asked);
-// Whether this run writes a video: the timeline (or --video) names one and every frame is
-// rendered, or --video asks for one of a part.
-bool makes_video(const Timeline& tl, const RenderOptions& o);
+// Whether this run, rendering `selected` frames (selected_frames), writes a video: the timeline
+// (or --video) names one and every frame is rendered, or --video asks for one of a part.
+bool makes_video(const Timeline& tl, const RenderOptions& o, size_t selected);
 // The frames to render: --frames and --shard applied to the timeline's frame range.
 std::vector<int> selected_frames(const Timeline& tl, const RenderOptions& o);
 // A backend by name (egl and osmesa: the GL backend on that platform); UsageError for unknown

@@ -1,9 +1,9 @@
 #include "cli/time_overrides.h"
 
-#include <charconv>
 #include <cmath>
 #include <numeric>
 
+#include "cli/option_numbers.h"
 #include "pipeline/errors.h"
 
 namespace sdfreel {
@@ -11,12 +11,6 @@ namespace sdfreel {
 namespace {
 
 constexpr double kMaxFrames = 1e8;  // as a timeline's [video] allows
-
-bool whole(const std::string& s, int64_t& out) {
-  const char* end = s.data() + s.size();
-  auto [p, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && p == end;
-}
 
 bool number(const std::string& s, double& out) {
   try {
@@ -31,16 +25,15 @@ bool number(const std::string& s, double& out) {
 }  // namespace
 
 Rational parse_fps_option(const std::string& text, const std::string& option) {
-  Rational fps{0, 1};
   const size_t slash = text.find('/');
-  const bool ok = slash == std::string::npos ? whole(text, fps.num)
-                                             : whole(text.substr(0, slash), fps.num) &&
-                                                   whole(text.substr(slash + 1), fps.den);
-  if (!ok || fps.num <= 0 || fps.den <= 0 || fps.num > 1000000000 || fps.den > 1000000)
+  const std::optional<int64_t> num = parse_count(text.substr(0, slash), 1000000000);
+  const std::optional<int64_t> den =
+      slash == std::string::npos ? 1 : parse_count(text.substr(slash + 1), 1000000);
+  if (!num || !den || *num == 0 || *den == 0)
     throw UsageError(option + " " + text +
                      ": frames per second are a whole number or N/D, e.g. 24 or 30000/1001");
-  const int64_t g = std::gcd(fps.num, fps.den);
-  return {fps.num / g, fps.den / g};
+  const int64_t g = std::gcd(*num, *den);
+  return {*num / g, *den / g};
 }
 
 void apply_time_overrides(const std::string& fps, double duration, Timeline& tl) {
@@ -52,9 +45,6 @@ void apply_time_overrides(const std::string& fps, double duration, Timeline& tl)
   }
   if (tl.duration * tl.fps.value() > kMaxFrames)
     throw UsageError("--fps and --duration make more than 100000000 frames");
-  if (tl.frame_count() < 1)
-    throw UsageError("the duration of " + std::to_string(tl.duration) + " s at " +
-                     std::to_string(tl.fps.value()) + " fps holds no frame");
 }
 
 std::vector<int> frames_in_time_range(const std::string& range, const Timeline& tl) {
