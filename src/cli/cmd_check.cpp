@@ -6,7 +6,9 @@
 #include "cli/camera_clearance.h"
 #include "cli/camera_path_stats.h"
 #include "cli/commands_impl.h"
+#include "cli/frame_format_check.h"
 #include "cli/output_folder.h"
+#include "io/frame_formats.h"
 #include "pipeline/frame_memory.h"
 #include "render/adaptive_sampling.h"
 #include "render/quality.h"
@@ -57,8 +59,7 @@ void print_clearance(const Timeline& tl, const SceneInfo& scene, const std::vect
 
 void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<int>& frames) {
   std::string files;
-  if (tl.write_exr) files += "frames/NNNNN.exr, ";
-  if (tl.write_png) files += "frames/NNNNN.png, ";
+  for (const std::string& ext : timeline_frame_files(tl)) files += "frames/NNNNN." + ext + ", ";
   std::printf("output:     %s/ (%sframes.framemd5, manifest.json)\n", tl.out_dir.c_str(),
               files.c_str());
   if (tl.video.empty())
@@ -75,6 +76,7 @@ void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<
 
 int run_check(const RenderOptions& o) {
   const Timeline tl = load_with_overrides(o);
+  validate_frame_formats(tl);
   check_output_folder(tl.out_dir);
   check_frame_memory(tl);  // render's pipeline checks it; check makes none for a built-in scene
   const std::vector<int> frames = selected_frames(tl, o);

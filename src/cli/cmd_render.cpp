@@ -6,12 +6,13 @@
 #include <memory>
 
 #include "cli/commands_impl.h"
+#include "cli/frame_format_check.h"
 #include "cli/interrupt_guard.h"
 #include "cli/output_folder.h"
 #include "cli/progress.h"
 #include "io/atomic_file.h"
 #include "io/folder_claim.h"
-#include "io/frame_files.h"
+#include "io/frame_formats.h"
 #include "io/manifest_journal.h"
 #include "io/video_encoder.h"
 #include "pipeline/frame_writer.h"
@@ -29,8 +30,10 @@ void publish_frame(const std::string& dir, const Timeline& tl, const ManifestHea
                    const RenderedFrame& f, VideoEncoder* encoder) {
   const int i = f.index;
   try {
-    if (tl.write_exr) write_exr_atomic(frame_path(dir, i, "exr"), f.linear, frame_metadata(tl, f));
-    if (tl.write_png) write_png16_atomic(frame_path(dir, i, "png"), f.display);
+    const std::map<std::string, std::string> metadata = frame_metadata(tl, f);
+    for (const std::string& ext : header.frame_files)
+      write_frame_file(frame_path(dir, i, ext), frame_format(ext, tl.frame_options), f.linear,
+                       f.display, metadata);
     const double pixels = double(tl.width) * tl.height;
     record_frame(dir, header,
                  ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash, f.display_md5,
@@ -48,7 +51,8 @@ void remove_foreign_render(const std::string& dir, const Manifest& old) {
   std::error_code ec;
   size_t removed = 0;
   for (const auto& [i, f] : old.frames)
-    for (const char* ext : {"exr", "png"}) removed += fs::remove(frame_path(dir, i, ext), ec);
+    for (const std::string& ext : old.header.frame_files)
+      removed += fs::remove(frame_path(dir, i, ext), ec);
   const std::string& video = old.header.video;
   const bool had_video = !video.empty() && fs::remove(dir + "/" + video, ec);
   fs::remove_all(checkpoint_dir(dir), ec);  // of the old settings: never usable
@@ -61,6 +65,7 @@ void remove_foreign_render(const std::string& dir, const Manifest& old) {
 
 int run_render(const RenderOptions& o) {
   Timeline tl = load_with_overrides(o);
+  validate_frame_formats(tl);
   const std::vector<int> frames = selected_frames(tl, o);
   const bool want_video = makes_video(tl, o, frames.size());
   // Everything that can fail on bad input or a missing backend happens before the first write.
@@ -131,7 +136,8 @@ int run_render(const RenderOptions& o) {
       if (previous) {
         auto it = previous->frames.find(i);
         if (it != previous->frames.end()) {
-          if (auto shown = load_checked_frame(dir, header, it->second, pipe.display())) {
+          std::string why;
+          if (auto shown = load_checked_frame(dir, header, it->second, pipe.display(), &why)) {
             // Already listed in the manifest consolidated above.
             ++kept;
             writer.push([&progress, enc = encoder.get(), i, shown = std::move(*shown)] {
@@ -140,6 +146,7 @@ int run_render(const RenderOptions& o) {
             });
             continue;
           }
+          std::fprintf(stderr, "note: frame %d is rendered again: %s\n", i, why.c_str());
         }
       }
       auto f = std::make_shared<const RenderedFrame>(pipe.render(i));

@@ -1,11 +1,14 @@
 // `sdfreel still TIMELINE --time SECONDS -o FILE`: one frame at any video time.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "cli/commands_impl.h"
 #include "io/frame_files.h"
+#include "io/frame_formats.h"
+#include "io/image_plugin.h"
 #include "io/sample_count_images.h"
 
 namespace sdfreel {
@@ -21,6 +24,30 @@ struct StillOptions {
   std::string sample_counts;  // "" = none; .exr exact counts, .png heat map
 };
 
+// The extension of -o's file (lower case, no dot), which names its format: exr and png as
+// always, any other OpenImageIO writes, found before the frame is rendered.
+std::string still_extension(const std::string& output) {
+  std::string ext = std::filesystem::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext.size() < 2)
+    throw UsageError("-o " + output +
+                     ": name the file with the extension of its format (.exr, .png, .tif, .dpx, "
+                     ".jpg, ...)");
+  ext.erase(0, 1);
+  if (ext == "exr" || ext == "png") return ext;
+  bool writes = false;
+  try {
+    writes = image_module_writes(ext);
+  } catch (const std::exception& e) {
+    throw UsageError("-o " + output + ": ." + ext + " files need OpenImageIO: " + e.what());
+  }
+  if (!writes)
+    throw UsageError("-o " + output + ": OpenImageIO on this machine writes no ." + ext +
+                     " files; use .exr, .png, .tif, .dpx, .jpg or another format it writes");
+  return ext;
+}
+
 int run_still(const StillOptions& o) {
   if (!o.frames.empty())
     throw UsageError(
@@ -29,9 +56,7 @@ int run_still(const StillOptions& o) {
         o.frames + "`");
   if (!o.has_time)
     throw UsageError("--time SECONDS is required: the video time of the frame to render");
-  const std::string ext = std::filesystem::path(o.output).extension().string();
-  if (ext != ".exr" && ext != ".png")
-    throw UsageError("-o " + o.output + ": the file must end in .exr or .png");
+  const std::string ext = still_extension(o.output);
   const std::string counts_ext = std::filesystem::path(o.sample_counts).extension().string();
   if (!o.sample_counts.empty() && counts_ext != ".exr" && counts_ext != ".png")
     throw UsageError("--sample-counts " + o.sample_counts + ": the file must end in .exr or .png");
@@ -43,10 +68,8 @@ int run_still(const StillOptions& o) {
   FramePipeline pipe(tl, timeline_backend(tl, o.render));
   const int frame = int(std::llround(o.time * tl.fps.value()));
   RenderedFrame f = pipe.render_context(frame_context_at(tl, pipe.scene(), frame, o.time));
-  if (ext == ".exr")
-    write_exr_atomic(o.output, f.linear, frame_metadata(tl, f));
-  else
-    write_png16_atomic(o.output, f.display);
+  write_frame_file(o.output, frame_format(ext, tl.frame_options), f.linear, f.display,
+                   frame_metadata(tl, f));
   if (!o.sample_counts.empty()) {
     const SampleCounts& counts = pipe.backend().sample_counts();
     if (counts_ext == ".exr")
@@ -69,12 +92,14 @@ int run_still(const StillOptions& o) {
 
 void add_still_command(CLI::App& app, int& status) {
   auto o = std::make_shared<StillOptions>();
-  CLI::App* cmd = app.add_subcommand("still", "render one frame at a video time to .exr or .png");
+  CLI::App* cmd = app.add_subcommand("still", "render one frame at a video time to an image file");
   cmd->add_option("TIMELINE", o->render.timeline_path, "timeline file (TOML)")->required();
   CLI::Option* time = cmd->add_option("--time", o->time, "video time in seconds (required)");
   // Accepted only to answer the mistake with what to use instead (not in --help).
   cmd->add_option("--frames", o->frames)->group("");
-  cmd->add_option("-o,--output", o->output, "output file, .exr (linear) or .png (display)")
+  cmd->add_option("-o,--output", o->output,
+                  "output file: .exr (linear), .png (display) or another format by its extension "
+                  "(.tif, .dpx, .jpg, ...)")
       ->required();
   add_backend_options(cmd, o->render);
   cmd->add_option("--threads", o->render.threads, "worker threads (default: all cores)")

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "io/frame_files.h"
+#include "io/frame_formats.h"
 #include "io/hashing.h"
 #include "io/versions.h"
 #include "pipeline/errors.h"
@@ -40,8 +41,8 @@ ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
   h.view = tl.view;
   h.codec = tl.codec;
   h.video = tl.video;
-  if (tl.write_exr) h.frame_files.push_back("exr");
-  if (tl.write_png) h.frame_files.push_back("png");
+  h.frame_files = timeline_frame_files(tl);
+  h.frame_options = frame_option_values(h.frame_files, tl.frame_options);
   return h;
 }
 
@@ -62,35 +63,43 @@ void check_output_folder(const std::string& dir) {
 std::optional<ImageRGB16> load_checked_frame(const std::string& dir, const ManifestHeader& header,
                                              const ManifestFrame& entry,
                                              const DisplayTransform& display, std::string* why) {
-  auto has = [&](const char* ext) {
-    return std::find(header.frame_files.begin(), header.frame_files.end(), ext) !=
-           header.frame_files.end();
-  };
   auto fail = [&](const std::string& msg) -> std::optional<ImageRGB16> {
     if (why) *why = msg;
     return std::nullopt;
   };
+  const FrameFileOptions options = frame_options_from_values(header.frame_options);
   try {
+    std::optional<ImageRGBA> linear;
     std::optional<ImageRGB16> shown;
-    if (has("exr")) {
-      const std::string p = frame_path(dir, entry.index, "exr");
+    std::string linear_from, delivered;  // delivered: a file checked only to be there
+    for (const std::string& ext : header.frame_files) {
+      const std::string p = frame_path(dir, entry.index, ext);
       if (!std::filesystem::exists(p)) return fail(p + " is missing");
-      ImageRGBA linear = read_exr(p);
-      if (linear_half_hash(linear) != entry.linear_hash)
-        return fail(p + " differs from the manifest");
-      if (!has("png")) {
-        shown = display.apply(linear);
-        if (md5_rgb48le(*shown) != entry.display_md5)
-          return fail(p + " gives display pixels that differ from the manifest");
+      const FrameFormat format = frame_format(ext, options);
+      if (!format.exact) {
+        delivered = p;
+        continue;
       }
+      FrameFilePixels got = read_frame_file(p, format);
+      if (got.linear && linear_half_hash(*got.linear) != entry.linear_hash)
+        return fail(p + " differs from the manifest");
+      if (got.display && md5_rgb48le(*got.display) != entry.display_md5)
+        return fail(p + " differs from the manifest");
+      if (got.linear && !linear) {
+        linear = std::move(got.linear);
+        linear_from = p;
+      }
+      if (got.display && !shown) shown = std::move(got.display);
     }
-    if (has("png")) {
-      const std::string p = frame_path(dir, entry.index, "png");
-      if (!std::filesystem::exists(p)) return fail(p + " is missing");
-      ImageRGB16 img = read_png16(p);
-      if (md5_rgb48le(img) != entry.display_md5) return fail(p + " differs from the manifest");
-      shown = std::move(img);
+    if (!shown && linear) {
+      shown = display.apply(*linear);
+      if (md5_rgb48le(*shown) != entry.display_md5)
+        return fail(linear_from + " gives display pixels that differ from the manifest");
     }
+    if (!shown && !delivered.empty())
+      return fail(delivered +
+                  " cannot be checked against the manifest (its format keeps fewer bits than "
+                  "the hashed pixels): keep exr, png or 16-bit tiff frames beside it");
     if (!shown) return fail("the manifest lists no frame files");
     return shown;
   } catch (const std::exception& e) {

@@ -17,6 +17,8 @@ namespace {
 struct ImageModule {
   SdfreelImageReadFn read = nullptr;
   SdfreelImageFreeFn free = nullptr;
+  SdfreelImageWriteFn write = nullptr;
+  SdfreelImageWritesFn writes = nullptr;
 };
 
 // Opened once and kept for the life of the process (OIIO's libraries do not unload cleanly).
@@ -37,7 +39,9 @@ const ImageModule& image_module() {
       }
       module.read = reinterpret_cast<SdfreelImageReadFn>(dlsym(handle, SDFREEL_IMAGE_READ));
       module.free = reinterpret_cast<SdfreelImageFreeFn>(dlsym(handle, SDFREEL_IMAGE_FREE));
-      if (module.read && module.free) return;
+      module.write = reinterpret_cast<SdfreelImageWriteFn>(dlsym(handle, SDFREEL_IMAGE_WRITE));
+      module.writes = reinterpret_cast<SdfreelImageWritesFn>(dlsym(handle, SDFREEL_IMAGE_WRITES));
+      if (module.read && module.free && module.write && module.writes) return;
       module = {};
       problem = path.string() + " is not sdfreel's image module of this version";
     }
@@ -77,6 +81,21 @@ StoredImage read_stored_image(const std::string& path) {
   else
     widen<float>(raw.samples, count, image.samples);
   return image;
+}
+
+void write_image_file(const std::string& format_name, const std::string& path,
+                      const ImageToWrite& image) {
+  const ImageModule& module = image_module();
+  const SdfreelImageToWrite raw{
+      format_name.c_str(), path.c_str(),  image.width,     image.height,  image.channels,
+      image.sample_bits,   image.samples, image.file_bits, image.quality, "sdfreel"};
+  char error[1024] = "";
+  if (!module.write(&raw, error, sizeof error))
+    throw std::runtime_error(error[0] ? error : "OpenImageIO could not write it");
+}
+
+bool image_module_writes(const std::string& extension) {
+  return image_module().writes(extension.c_str()) != 0;
 }
 
 }  // namespace sdfreel

@@ -171,7 +171,8 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   tl.out_dir = "output/" + timeline_stem(tl.path);
   const toml::table* output = section(r, root, "output");
   if (!output) return;
-  r.check_keys(*output, "[output]", {"dir", "frames", "video", "codec", "crf"});
+  r.check_keys(*output, "[output]",
+               {"dir", "frames", "video", "codec", "crf", "tiff_bits", "dpx_bits", "jpeg_quality"});
 
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");
@@ -179,15 +180,7 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
     if (std::string problem = check_path_text("output.dir", tl.out_dir); !problem.empty())
       r.fail(*n, problem);
   }
-  if (const toml::node* n = output->get("frames")) {
-    const toml::array& formats = r.array(*n, "output.frames");
-    tl.write_exr = tl.write_png = false;
-    for (size_t i = 0; i < formats.size(); ++i) {
-      const std::string name = "output.frames[" + std::to_string(i) + "]";
-      const std::string f = r.choice(*formats.get(i), name, {"exr", "png"});
-      (f == "exr" ? tl.write_exr : tl.write_png) = true;
-    }
-  }
+  parse_frame_files(r, *output, tl);
   if (const toml::node* n = output->get("video")) tl.video = r.string(*n, "output.video");
   if (const toml::node* n = output->get("codec")) {
     const std::vector<std::string> codecs = {"h264", "ffv1", "prores"};

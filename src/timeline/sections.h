@@ -18,6 +18,8 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
 // [video] adaptive (after quality, whose preset gives the defaults).
 void parse_adaptive(const TomlReader& r, const toml::table& video, Timeline& tl);
 void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl);
+// [output] frames and the options of the formats OpenImageIO writes (parse_frame_files.cpp).
+void parse_frame_files(const TomlReader& r, const toml::table& output, Timeline& tl);
 void parse_color(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_time(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_camera(const TomlReader& r, const toml::table& root, const SceneInfo& scene,

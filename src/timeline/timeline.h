@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/quality.h"
 #include "timeline/curve.h"
+#include "timeline/frame_file_options.h"
 
 namespace sdfreel {
 
@@ -83,6 +84,15 @@ struct Timeline {
   // [output]
   std::string out_dir;  // default: output/<timeline file stem>
   bool write_exr = true, write_png = true;
+  // Frame files OpenImageIO writes ("tif", "dpx", "jpg", ...: io/frame_formats.h), with where each
+  // name stands in the file: a name beyond the known ones is checked against OpenImageIO's
+  // writers when the command starts (validate_frame_formats), which this library does not link.
+  struct OtherFrames {
+    std::string ext;
+    int line = 0, column = 0;
+  };
+  std::vector<OtherFrames> other_frames;
+  FrameFileOptions frame_options;
   std::string video;           // "" = no video
   std::string codec = "h264";  // h264 | ffv1 | prores
   int crf = 18;

@@ -250,9 +250,17 @@ TEST_F(BadInput, CrfRange) {
   expect_error(video_with("[output]\ncrf = -1"), "output.crf -1 is outside 0..51", 4, 7);
 }
 
+// Any lower-case extension parses: whether OpenImageIO writes it is checked when the command
+// starts (tests/formats).
 TEST_F(BadInput, UnknownFrameFormat) {
-  expect_error(video_with("[output]\nframes = [\"exr\", \"jpg\"]"),
-               "output.frames[1] 'jpg' is not one of exr or png", 4, 18);
+  expect_error(video_with("[output]\nframes = [\"exr\", \".jpg\"]"),
+               "output.frames[1] = \".jpg\": name a frame format by its file extension in lower "
+               "case",
+               4, 18);
+  expect_error(video_with("[output]\ntiff_bits = 24"), "output.tiff_bits = 24: use 8, 16 or 32", 4,
+               13);
+  expect_error(video_with("[output]\njpeg_quality = 0"), "output.jpeg_quality 0 is outside 1..100",
+               4, 16);
 }
 
 TEST_F(BadInput, NotUtf8) {

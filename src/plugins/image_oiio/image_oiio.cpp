@@ -1,6 +1,7 @@
-// sdfreel's image-reading module: any format OpenImageIO reads (PNG, JPEG, EXR, HDR, TIFF, ...),
-// returned as stored (8/16-bit integers or floats). Opened with dlopen on first use
-// (src/io/image_plugin.cpp); it holds no state.
+// sdfreel's image module: reads any format OpenImageIO reads (PNG, JPEG, EXR, HDR, TIFF, ...),
+// returned as stored (8/16-bit integers or floats), and writes frame files in the formats beyond
+// EXR and PNG (TIFF, DPX, JPEG, ...). Opened with dlopen on first use (src/io/image_plugin.cpp);
+// it holds no state.
 #include <OpenImageIO/imageio.h>
 
 #include <cstdlib>
@@ -58,4 +59,54 @@ extern "C" __attribute__((visibility("default"))) void sdfreel_image_free_v1(
     SdfreelStoredImage* image) {
   std::free(image->samples);
   image->samples = nullptr;
+}
+
+namespace {
+
+OIIO::TypeDesc file_type(int file_bits, int sample_bits) {
+  const int bits = file_bits ? file_bits : sample_bits;
+  if (bits == 8) return OIIO::TypeDesc::UINT8;
+  if (bits <= 16) return OIIO::TypeDesc::UINT16;
+  return OIIO::TypeDesc::FLOAT;
+}
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) int sdfreel_image_write_v1(
+    const SdfreelImageToWrite* image, char* error, size_t error_size) {
+  try {
+    auto out = OIIO::ImageOutput::create(image->format_name);
+    if (!out) return fail(OIIO::geterror(), error, error_size);
+    OIIO::ImageSpec spec(image->width, image->height, image->channels,
+                         file_type(image->file_bits, image->sample_bits));
+    if (image->file_bits == 10 || image->file_bits == 12)
+      spec.attribute("oiio:BitsPerSample", image->file_bits);
+    if (image->channels == 4) spec.alpha_channel = 3;
+    if (image->quality > 0)
+      spec.attribute("Compression",
+                     std::string(out->format_name()) + ":" + std::to_string(image->quality));
+    else if (std::strcmp(out->format_name(), "tiff") == 0)
+      spec.attribute("Compression", "zip");
+    if (image->software) spec.attribute("Software", image->software);
+    // The samples are display values or scene-linear floats, never premultiplied by an alpha.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!out->open(image->path, spec)) return fail(out->geterror(), error, error_size);
+    const OIIO::TypeDesc given =
+        image->sample_bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::FLOAT;
+    const bool wrote = out->write_image(given, image->samples);
+    const bool closed = out->close();
+    if (!wrote || !closed) return fail(out->geterror(), error, error_size);
+    return 1;
+  } catch (const std::exception& e) {
+    return fail(e.what(), error, error_size);
+  }
+}
+
+extern "C" __attribute__((visibility("default"))) int sdfreel_image_writes_v1(
+    const char* extension) {
+  try {
+    return OIIO::ImageOutput::create(std::string("frame.") + extension) ? 1 : 0;
+  } catch (const std::exception&) {
+    return 0;
+  }
 }

@@ -1,0 +1,170 @@
+// Frame files beyond EXR and PNG (docs/timeline.md#frame-formats): written by OpenImageIO through
+// the image module, read back here with OpenImageIO itself and compared with the PNG and EXR of
+// the same frame; resume and encode check the exact ones, and an unknown extension is exit 2.
+#include <Imath/half.h>
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "io/frame_files.h"
+#include "support/run.h"
+#include "support/scratch.h"
+
+namespace sdfreel::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small sdf_morph timeline (64x36, 10 fps) keeping the frame files `formats`, with more
+// [output] keys. Its frames key is on line 11.
+std::string timeline(int frames, const std::string& formats, const std::string& keys = "") {
+  return "[video]\nscene = \"sdf_morph\"\nfps = 10\nduration = " + std::to_string(frames / 10.0) +
+         "\nresolution = [64, 36]\nsamples = 1\nquality = \"draft\"\n\n[output]\ndir = \"out\"\n"
+         "frames = [" +
+         formats + "]\n" + keys +
+         "\n[camera]\nkeys = [\n  { t = 0.0, position = [0.0, 1.5, -4.0], target = [0.0, 0.6, 0.0] "
+         "},\n  { t = 2.0, position = [3.0, 1.8, -2.5], target = [0.0, 0.7, 0.0] },\n]\n";
+}
+
+struct Read {
+  OIIO::ImageSpec spec;
+  std::vector<float> values;  // OpenImageIO's 0..1 (integer files) or the stored floats
+};
+
+Read read(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
+  Read r;
+  if (!in) return r;
+  r.spec = in->spec();
+  r.values.resize(size_t(r.spec.width) * r.spec.height * r.spec.nchannels);
+  EXPECT_TRUE(in->read_image(0, 0, 0, r.spec.nchannels, OIIO::TypeDesc::FLOAT, r.values.data()));
+  return r;
+}
+
+// Largest difference, in units of 1/65535, between a file's RGB and the frame's PNG.
+double largest_difference(const Read& file, const ImageRGB16& png) {
+  double worst = 0.0;
+  for (size_t p = 0; p < png.pixels.size() / 3; ++p)
+    for (int c = 0; c < 3; ++c)
+      worst =
+          std::max(worst, std::fabs(std::round(file.values[p * file.spec.nchannels + c] * 65535.0) -
+                                    png.pixels[p * 3 + c]));
+  return worst;
+}
+
+TEST(FrameFormats, DisplayFormatsHoldThePngsPixelsInTheirBits) {
+  const std::string dir = scratch_dir("formats-display");
+  write_file(dir + "/t.toml", timeline(2, "\"png\", \"tif\", \"dpx\", \"jpg\", \"tga\""));
+  const RunResult r = run_sdfreel("render t.toml --no-video", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const ImageRGB16 png = read_png16(dir + "/out/frames/00001.png");
+  const Read tif = read(dir + "/out/frames/00001.tif");
+  EXPECT_EQ(tif.spec.format, OIIO::TypeDesc::UINT16);
+  EXPECT_EQ(tif.spec.nchannels, 3);
+  EXPECT_EQ(largest_difference(tif, png), 0.0);  // 16 bits: the same values
+  const Read dpx = read(dir + "/out/frames/00001.dpx");
+  EXPECT_EQ(dpx.spec.get_int_attribute("oiio:BitsPerSample"), 10);
+  EXPECT_LE(largest_difference(dpx, png), 65535.0 / 1023 / 2 + 1);  // rounded to 10 bits
+  const Read jpg = read(dir + "/out/frames/00001.jpg");
+  EXPECT_EQ(jpg.spec.format, OIIO::TypeDesc::UINT8);
+  double sum = 0.0;
+  for (size_t p = 0; p < png.pixels.size(); ++p)
+    sum += std::fabs(jpg.values[p] * 65535.0 - png.pixels[p]);
+  EXPECT_LT(sum / png.pixels.size(), 3.0 * 257) << "mean error over 3/255 at quality 95";
+  const Read tga = read(dir + "/out/frames/00001.tga");  // any format OpenImageIO writes
+  EXPECT_EQ(tga.spec.width, 64);
+  EXPECT_LE(largest_difference(tga, png), 257.0 / 2 + 1);  // 8 bits
+  // The manifest lists the files and the options that shaped them; the hashes are the PNG's.
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  EXPECT_EQ(m["frame_files"], nlohmann::json({"png", "tif", "dpx", "jpg", "tga"}));
+  EXPECT_EQ(m["frame_options"],
+            nlohmann::json({{"tiff_bits", 16}, {"dpx_bits", 10}, {"jpeg_quality", 95}}));
+}
+
+TEST(FrameFormats, FloatTiffHoldsTheExrsLinearPixels) {
+  const std::string dir = scratch_dir("formats-float");
+  write_file(dir + "/t.toml", timeline(1, "\"exr\", \"tiff\"", "tiff_bits = 32\n"));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  const ImageRGBA exr = read_exr(dir + "/out/frames/00000.exr");
+  const Read tif = read(dir + "/out/frames/00000.tiff");
+  EXPECT_EQ(tif.spec.format, OIIO::TypeDesc::FLOAT);
+  ASSERT_EQ(tif.values.size(), exr.pixels.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < exr.pixels.size(); ++i)
+    differing += float(half(tif.values[i])) != exr.pixels[i];
+  EXPECT_EQ(differing, 0u) << "the TIFF's floats round to the EXR's halves";
+}
+
+TEST(FrameFormats, ResumeAndEncodeCheckExactFilesAndRefuseLossyOnes) {
+  const std::string dir = scratch_dir("formats-resume");
+  write_file(dir + "/t.toml", timeline(3, "\"tif\""));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  // A frame file that is another frame's is found and that frame rendered again.
+  fs::copy_file(dir + "/out/frames/00000.tif", dir + "/out/frames/00002.tif",
+                fs::copy_options::overwrite_existing);
+  RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("00002.tif differs from the manifest"), std::string::npos) << r.err;
+  size_t kept = 0;
+  for (size_t at = 0; (at = r.err.find(" kept (frame", at)) != std::string::npos; ++at) ++kept;
+  EXPECT_EQ(kept, 2u) << r.err;
+  r = run_sdfreel("encode out -o v.mkv --codec ffv1", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("(3 frames, ffv1)"), std::string::npos) << r.err;
+
+  const std::string lossy = scratch_dir("formats-lossy");
+  write_file(lossy + "/t.toml", timeline(2, "\"jpg\""));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", lossy).status, 0);
+  r = run_sdfreel("encode out -o v.mkv --codec ffv1", lossy);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("cannot be checked against the manifest"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(lossy + "/v.mkv"));
+}
+
+TEST(FrameFormats, AnExtensionNoWriterTakesIsExitTwoAtItsPlace) {
+  const std::string dir = scratch_dir("formats-bad");
+  write_file(dir + "/t.toml", timeline(1, "\"png\", \"xyz\""));
+  RunResult r = run_sdfreel("render t.toml", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("t.toml:11:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("writes no .xyz files"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+  EXPECT_EQ(run_sdfreel("check t.toml", dir).status, 2);
+  for (const char* bad : {"\"TIF\"", "\".png\"", "\"\""}) {
+    write_file(dir + "/t.toml", timeline(1, bad));
+    r = run_sdfreel("render t.toml", dir);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("by its file extension in lower case"), std::string::npos) << r.err;
+  }
+  write_file(dir + "/t.toml", timeline(1, "\"tif\"", "tiff_bits = 24\n"));
+  r = run_sdfreel("render t.toml", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("output.tiff_bits = 24: use 8, 16 or 32"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST(FrameFormats, StillWritesAnyFormatByItsExtension) {
+  const std::string dir = scratch_dir("formats-still");
+  write_file(dir + "/t.toml", timeline(4, "\"png\""));
+  ASSERT_EQ(run_sdfreel("still t.toml --time 0.25 -o a.png", dir).status, 0);
+  for (const char* name : {"a.tif", "a.jpg", "a.DPX"}) {
+    const RunResult r = run_sdfreel(std::string("still t.toml --time 0.25 -o ") + name, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read(dir + "/" + name).spec.width, 64) << name;
+  }
+  EXPECT_EQ(largest_difference(read(dir + "/a.tif"), read_png16(dir + "/a.png")), 0.0);
+  const RunResult bad = run_sdfreel("still t.toml --time 0.25 -o a.xyz", dir);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("writes no .xyz files"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir + "/a.xyz"));
+  // OpenImageIO is loaded for these formats only (render_test: never for a PNG).
+  const RunResult loads = run_sdfreel("still t.toml --time 0.25 -o b.tif", dir, "LD_DEBUG=files ");
+  EXPECT_NE(loads.err.find("libOpenImageIO"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sdfreel::test
