@@ -6,6 +6,7 @@
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
@@ -37,22 +38,53 @@ class MemoryStream : public Imf::OStream {
 
 constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
 
+struct NamedCompression {
+  const char* name;
+  Imf::Compression compression;
+  bool lossless;
+};
+
+constexpr NamedCompression kCompressions[] = {
+    {"none", Imf::NO_COMPRESSION, true},    {"rle", Imf::RLE_COMPRESSION, true},
+    {"zips", Imf::ZIPS_COMPRESSION, true},  {"zip", Imf::ZIP_COMPRESSION, true},
+    {"piz", Imf::PIZ_COMPRESSION, true},    {"dwaa", Imf::DWAA_COMPRESSION, false},
+    {"dwab", Imf::DWAB_COMPRESSION, false},
+};
+
+const NamedCompression& named_compression(const std::string& name) {
+  for (const NamedCompression& c : kCompressions)
+    if (name == c.name) return c;
+  throw std::runtime_error("unknown EXR compression '" + name + "'");
+}
+
 }  // namespace
 
+bool exr_compression_is_lossless(const std::string& compression) {
+  return named_compression(compression).lossless;
+}
+
 std::vector<char> encode_exr(const ImageRGBA& linear,
-                             const std::map<std::string, std::string>& metadata) {
+                             const std::map<std::string, std::string>& metadata,
+                             const ExrSettings& settings) {
   Imf::Header header(linear.width, linear.height);
-  header.compression() = Imf::PIZ_COMPRESSION;  // lossless; faster and smaller than zip here
+  // PIZ by default: lossless; faster and smaller than zip on our frames.
+  header.compression() = named_compression(settings.compression).compression;
+  Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65
   for (const auto& [key, value] : metadata)
     header.insert("sdfreel:" + key, Imf::StringAttribute(value));
   // OpenEXR writes a half channel from half data only: round here (Imath, nearest even).
-  std::vector<Imath::half> halves(linear.pixels.begin(), linear.pixels.end());
+  std::vector<Imath::half> halves;
+  if (!settings.full_float) halves.assign(linear.pixels.begin(), linear.pixels.end());
+  const Imf::PixelType type = settings.full_float ? Imf::FLOAT : Imf::HALF;
+  char* base = settings.full_float
+                   ? reinterpret_cast<char*>(const_cast<float*>(linear.pixels.data()))
+                   : reinterpret_cast<char*>(halves.data());
+  const size_t sample = settings.full_float ? sizeof(float) : sizeof(Imath::half);
   Imf::FrameBuffer buffer;
-  const size_t pixel = 4 * sizeof(Imath::half);
   for (int c = 0; c < 4; ++c) {
-    header.channels().insert(kChannels[c], Imf::Channel(Imf::HALF));
-    buffer.insert(kChannels[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves.data() + c),
-                                           pixel, pixel * size_t(linear.width)));
+    header.channels().insert(kChannels[c], Imf::Channel(type));
+    buffer.insert(kChannels[c], Imf::Slice(type, base + c * sample, 4 * sample,
+                                           4 * sample * size_t(linear.width)));
   }
   MemoryStream stream;
   {

@@ -1,6 +1,6 @@
 #pragma once
-// Half-float RGBA EXR files through OpenEXR itself (not OpenImageIO, whose start-up costs half a
-// second: see png_file.h).
+// RGBA EXR files (half or float) through OpenEXR itself (not OpenImageIO, whose start-up costs half
+// a second: see png_file.h).
 #include <map>
 #include <string>
 #include <vector>
@@ -9,10 +9,21 @@
 
 namespace sdfreel {
 
-// Encodes `linear` as a PIZ-compressed half RGBA EXR in memory, with each metadata entry stored
-// as the string attribute "sdfreel:<key>". The floats are rounded to half (nearest even).
+// How an EXR stores its pixels: PIZ-compressed half floats unless [output] says otherwise.
+struct ExrSettings {
+  std::string compression = "piz";  // none, rle, zips, zip, piz (lossless), dwaa, dwab (lossy)
+  bool full_float = false;          // 32-bit float channels instead of half
+};
+// Whether a compression of exr_compression_names() (timeline/frame_file_options.h) gives the
+// pixels back exactly. Throws for another name.
+bool exr_compression_is_lossless(const std::string& compression);
+
+// Encodes `linear` as an RGBA EXR in memory, with each metadata entry stored as the string
+// attribute "sdfreel:<key>" and the chromaticities of its primaries (Rec.709, D65 white: the
+// scene-linear space the scenes render in). Half channels round the floats to nearest even.
 std::vector<char> encode_exr(const ImageRGBA& linear,
-                             const std::map<std::string, std::string>& metadata);
+                             const std::map<std::string, std::string>& metadata,
+                             const ExrSettings& settings = {});
 
 // Reads R, G, B (and A, else 1) of an EXR as floats. Throws std::runtime_error naming `path`.
 ImageRGBA read_exr_file(const std::string& path);

@@ -26,11 +26,12 @@ constexpr PngCompression kFramePng{1, 0x80, 2};  // level 1, PNG_FILTER_PAETH, Z
 }  // namespace
 
 void write_exr_atomic(const std::string& path, const ImageRGBA& linear,
-                      const std::map<std::string, std::string>& metadata) {
+                      const std::map<std::string, std::string>& metadata,
+                      const ExrSettings& settings) {
   check_size(path, linear.width, linear.height, linear.pixels.size(), 4);
   std::vector<char> bytes;
   try {
-    bytes = encode_exr(linear, metadata);
+    bytes = encode_exr(linear, metadata, settings);
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write " + path + ": " + e.what());
   }

@@ -4,14 +4,16 @@
 #include <map>
 #include <string>
 
+#include "io/exr_file.h"
 #include "render/image.h"
 
 namespace sdfreel {
 
-// EXR: half-float RGBA, scene-linear, with string metadata attributes (key -> value, stored as
-// "sdfreel:<key>").
+// EXR: RGBA, scene-linear, half floats and PIZ unless `settings` says otherwise, with string
+// metadata attributes (key -> value, stored as "sdfreel:<key>").
 void write_exr_atomic(const std::string& path, const ImageRGBA& linear,
-                      const std::map<std::string, std::string>& metadata);
+                      const std::map<std::string, std::string>& metadata,
+                      const ExrSettings& settings = {});
 // PNG: 16-bit RGB display values.
 void write_png16_atomic(const std::string& path, const ImageRGB16& display);
 

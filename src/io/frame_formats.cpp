@@ -1,5 +1,6 @@
 #include "io/frame_formats.h"
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -29,8 +30,13 @@ ImageRGB16 rounded_to_bits(const ImageRGB16& display, int bits) {
 FrameFormat frame_format(const std::string& ext, const FrameFileOptions& options) {
   FrameFormat f;
   f.ext = ext;
-  if (ext == "exr" || ext == "png") {
-    f.linear = ext == "exr";
+  if (ext == "exr") {
+    f.linear = true;
+    f.through_oiio = false;
+    f.exr = {options.exr_compression, options.exr_bits == 32};
+    f.file_bits = options.exr_bits;
+    f.exact = exr_compression_is_lossless(options.exr_compression);
+  } else if (ext == "png") {
     f.exact = true;
     f.through_oiio = false;
   } else if (ext == "tif" || ext == "tiff") {
@@ -57,25 +63,35 @@ std::vector<std::string> timeline_frame_files(const Timeline& tl) {
   return exts;
 }
 
-std::map<std::string, int> frame_option_values(const std::vector<std::string>& exts,
-                                               const FrameFileOptions& options) {
-  std::map<std::string, int> values;
+std::map<std::string, std::string> frame_option_values(const std::vector<std::string>& exts,
+                                                       const FrameFileOptions& options) {
+  const FrameFileOptions defaults;
+  std::map<std::string, std::string> values;
   for (const std::string& ext : exts) {
-    if (ext == "tif" || ext == "tiff") values["tiff_bits"] = options.tiff_bits;
-    if (ext == "dpx") values["dpx_bits"] = options.dpx_bits;
-    if (ext == "jpg" || ext == "jpeg") values["jpeg_quality"] = options.jpeg_quality;
+    if (ext == "tif" || ext == "tiff") values["tiff_bits"] = std::to_string(options.tiff_bits);
+    if (ext == "dpx") values["dpx_bits"] = std::to_string(options.dpx_bits);
+    if (ext == "jpg" || ext == "jpeg")
+      values["jpeg_quality"] = std::to_string(options.jpeg_quality);
+    if (ext == "exr" && (options.exr_compression != defaults.exr_compression ||
+                         options.exr_bits != defaults.exr_bits)) {
+      values["exr_compression"] = options.exr_compression;
+      values["exr_bits"] = std::to_string(options.exr_bits);
+    }
   }
   return values;
 }
 
-FrameFileOptions frame_options_from_values(const std::map<std::string, int>& values) {
+FrameFileOptions frame_options_from_values(const std::map<std::string, std::string>& values) {
   FrameFileOptions options;
-  auto take = [&](const char* key, int& field) {
-    if (auto it = values.find(key); it != values.end()) field = it->second;
+  auto number = [&](const char* key, int& field) {
+    if (auto it = values.find(key); it != values.end()) field = std::atoi(it->second.c_str());
   };
-  take("tiff_bits", options.tiff_bits);
-  take("dpx_bits", options.dpx_bits);
-  take("jpeg_quality", options.jpeg_quality);
+  number("tiff_bits", options.tiff_bits);
+  number("dpx_bits", options.dpx_bits);
+  number("jpeg_quality", options.jpeg_quality);
+  number("exr_bits", options.exr_bits);
+  if (auto it = values.find("exr_compression"); it != values.end())
+    options.exr_compression = it->second;
   return options;
 }
 
@@ -84,7 +100,7 @@ void write_frame_file(const std::string& path, const FrameFormat& format, const 
                       const std::map<std::string, std::string>& metadata) {
   if (!format.through_oiio) {
     if (format.linear)
-      write_exr_atomic(path, linear, metadata);
+      write_exr_atomic(path, linear, metadata, format.exr);
     else
       write_png16_atomic(path, display);
     return;

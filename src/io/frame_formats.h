@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/exr_file.h"
 #include "render/image.h"
 #include "timeline/frame_file_options.h"
 
@@ -26,18 +27,20 @@ struct FrameFormat {
   // beside them, or cannot be.
   bool exact = false;
   bool through_oiio = true;
+  ExrSettings exr;  // for "exr"
 };
 
 FrameFormat frame_format(const std::string& ext, const FrameFileOptions& options);
 // The extensions of the frame files a timeline asks for: exr and png first, as before.
 std::vector<std::string> timeline_frame_files(const Timeline& tl);
 
-// The options that shape the files of these extensions, by their [output] key ("tiff_bits": 16),
-// for the manifest; empty when only EXR and PNG are written.
-std::map<std::string, int> frame_option_values(const std::vector<std::string>& exts,
-                                               const FrameFileOptions& options);
+// The options that shape the files of these extensions, by their [output] key ("tiff_bits":
+// "16"), for the manifest: every option of a format beyond EXR and PNG, EXR's when not the
+// default (PIZ, half); empty for the default EXR and PNG.
+std::map<std::string, std::string> frame_option_values(const std::vector<std::string>& exts,
+                                                       const FrameFileOptions& options);
 // Reads them back (keys it does not know are ignored; missing ones keep their defaults).
-FrameFileOptions frame_options_from_values(const std::map<std::string, int>& values);
+FrameFileOptions frame_options_from_values(const std::map<std::string, std::string>& values);
 
 // Writes one frame file atomically (temporary beside it, then rename), from the linear or the
 // display pixels as its format takes. Throws std::runtime_error naming `path`.

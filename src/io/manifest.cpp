@@ -98,7 +98,11 @@ std::string manifest_to_json(const Manifest& m) {
   j["codec"] = h.codec;
   j["video"] = h.video;
   j["frame_files"] = h.frame_files;
-  if (!h.frame_options.empty()) j["frame_options"] = h.frame_options;
+  for (const auto& [key, value] : h.frame_options) {
+    const bool number =
+        !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+    j["frame_options"][key] = number ? json(std::stoi(value)) : json(value);
+  }
   if (!m.frames.empty()) j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
   json frames = json::array();
   for (const auto& [i, f] : m.frames) frames.push_back(manifest_frame_json(f));
@@ -135,7 +139,10 @@ Manifest manifest_from_json(const std::string& text) {
     h.frame_files = j.at("frame_files").get<std::vector<std::string>>();
     if (j.contains("frame_options"))
       for (const auto& [key, value] : j.at("frame_options").items())
-        h.frame_options[key] = int_field(value, "frame_options." + key, 0, kIntMax);
+        h.frame_options[key] =
+            value.is_string()
+                ? value.get<std::string>()
+                : std::to_string(int_field(value, "frame_options." + key, 0, kIntMax));
     for (const json& f : j.at("frames")) {
       const ManifestFrame fr = manifest_frame_from_json(f, h.frame_count);
       m.frames[fr.index] = fr;

@@ -41,9 +41,9 @@ struct ManifestHeader {
   std::string codec;                     // of the timeline, used by `encode` as the default
   std::string video;                     // file name the timeline asks for ("" none)
   std::vector<std::string> frame_files;  // extensions: "exr", "png", "tif", ...
-  // The [output] options that shape those beyond EXR and PNG ("tiff_bits": 32), absent in the
-  // JSON when there are none (io/frame_formats.h).
-  std::map<std::string, int> frame_options;
+  // The [output] options that shape those files ("tiff_bits": 32), absent in the JSON when there
+  // are none (io/frame_formats.h); numbers are written as JSON numbers.
+  std::map<std::string, std::string> frame_options;
   bool same_render_as(
       const ManifestHeader& o) const;  // all fields but timeline_path/versions order
 };

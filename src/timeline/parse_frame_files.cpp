@@ -54,6 +54,10 @@ void parse_frame_files(const TomlReader& r, const toml::table& output, Timeline&
     options.dpx_bits = one_of(r, *n, "output.dpx_bits", {8, 10, 12, 16});
   if (const toml::node* n = output.get("jpeg_quality"))
     options.jpeg_quality = int(r.integer_in(*n, "output.jpeg_quality", 1, 100));
+  if (const toml::node* n = output.get("exr_compression"))
+    options.exr_compression = r.choice(*n, "output.exr_compression", exr_compression_names());
+  if (const toml::node* n = output.get("exr_bits"))
+    options.exr_bits = one_of(r, *n, "output.exr_bits", {16, 32});
 }
 
 }  // namespace sdfreel

@@ -172,7 +172,8 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   const toml::table* output = section(r, root, "output");
   if (!output) return;
   r.check_keys(*output, "[output]",
-               {"dir", "frames", "video", "codec", "crf", "tiff_bits", "dpx_bits", "jpeg_quality"});
+               {"dir", "frames", "video", "codec", "crf", "tiff_bits", "dpx_bits", "jpeg_quality",
+                "exr_compression", "exr_bits"});
 
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");

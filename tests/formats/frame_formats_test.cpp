@@ -56,6 +56,13 @@ double largest_difference(const Read& file, const ImageRGB16& png) {
   return worst;
 }
 
+// Frames --resume kept, by its progress lines.
+size_t kept_frames(const std::string& err) {
+  size_t kept = 0;
+  for (size_t at = 0; (at = err.find(" kept (frame", at)) != std::string::npos; ++at) ++kept;
+  return kept;
+}
+
 TEST(FrameFormats, DisplayFormatsHoldThePngsPixelsInTheirBits) {
   const std::string dir = scratch_dir("formats-display");
   write_file(dir + "/t.toml", timeline(2, "\"png\", \"tif\", \"dpx\", \"jpg\", \"tga\""));
@@ -99,6 +106,30 @@ TEST(FrameFormats, FloatTiffHoldsTheExrsLinearPixels) {
   EXPECT_EQ(differing, 0u) << "the TIFF's floats round to the EXR's halves";
 }
 
+TEST(FrameFormats, ExrSettingsShapeTheFileNotTheHashes) {
+  const std::string dir = scratch_dir("formats-exr");
+  write_file(dir + "/t.toml", timeline(2, "\"exr\""));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  const std::string plain = read_file(dir + "/out/frames.framemd5");
+  write_file(dir + "/t.toml", timeline(2, "\"exr\"", "exr_compression = \"zip\"\nexr_bits = 32\n"));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  const Read exr = read(dir + "/out/frames/00001.exr");
+  EXPECT_EQ(exr.spec.format, OIIO::TypeDesc::FLOAT);
+  EXPECT_EQ(exr.spec.get_string_attribute("compression"), "zip");
+  EXPECT_EQ(read_file(dir + "/out/frames.framemd5"), plain);
+  const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
+  EXPECT_EQ(m["frame_options"], nlohmann::json({{"exr_bits", 32}, {"exr_compression", "zip"}}));
+  RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
+  EXPECT_EQ(kept_frames(r.err), 2u) << r.err;
+
+  // DWAA is lossy: its frames only deliver.
+  write_file(dir + "/t.toml", timeline(2, "\"exr\"", "exr_compression = \"dwaa\"\n"));
+  ASSERT_EQ(run_sdfreel("render t.toml --no-video", dir).status, 0);
+  r = run_sdfreel("encode out -o v.mkv --codec ffv1", dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("cannot be checked against the manifest"), std::string::npos) << r.err;
+}
+
 TEST(FrameFormats, ResumeAndEncodeCheckExactFilesAndRefuseLossyOnes) {
   const std::string dir = scratch_dir("formats-resume");
   write_file(dir + "/t.toml", timeline(3, "\"tif\""));
@@ -109,9 +140,7 @@ TEST(FrameFormats, ResumeAndEncodeCheckExactFilesAndRefuseLossyOnes) {
   RunResult r = run_sdfreel("render t.toml --no-video --resume", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("00002.tif differs from the manifest"), std::string::npos) << r.err;
-  size_t kept = 0;
-  for (size_t at = 0; (at = r.err.find(" kept (frame", at)) != std::string::npos; ++at) ++kept;
-  EXPECT_EQ(kept, 2u) << r.err;
+  EXPECT_EQ(kept_frames(r.err), 2u) << r.err;
   r = run_sdfreel("encode out -o v.mkv --codec ffv1", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("(3 frames, ffv1)"), std::string::npos) << r.err;
