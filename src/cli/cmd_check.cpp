@@ -6,7 +6,7 @@
 #include "cli/camera_clearance.h"
 #include "cli/camera_path_stats.h"
 #include "cli/commands_impl.h"
-#include "cli/frame_format_check.h"
+#include "cli/output_checks.h"
 #include "cli/output_folder.h"
 #include "io/frame_formats.h"
 #include "pipeline/frame_memory.h"
@@ -14,6 +14,7 @@
 #include "render/quality.h"
 #include "scenes/registry.h"
 #include "shader/shader_project.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel {
 
@@ -68,8 +69,9 @@ void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<
     std::printf(
         "video:      none: a partial frame range writes no video (then `sdfreel encode`, or "
         "--video NAME)\n");
-  else if (tl.codec == "h264")
-    std::printf("video:      %s/%s (h264, crf %d)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.crf);
+  else if (find_video_codec_rule(tl.codec)->takes_crf)
+    std::printf("video:      %s/%s (%s, crf %d)\n", tl.out_dir.c_str(), tl.video.c_str(),
+                tl.codec.c_str(), tl.crf);
   else
     std::printf("video:      %s/%s (%s)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.codec.c_str());
 }
@@ -80,6 +82,7 @@ int run_check(const RenderOptions& o) {
   check_output_folder(tl.out_dir);
   check_frame_memory(tl);  // render's pipeline checks it; check makes none for a built-in scene
   const std::vector<int> frames = selected_frames(tl, o);
+  validate_video_encoder(tl, makes_video(tl, o, frames.size()));
   const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
   if (tl.shader_scene) {

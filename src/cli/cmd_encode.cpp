@@ -9,8 +9,10 @@
 #include "cli/output_folder.h"
 #include "cli/time_overrides.h"
 #include "cli/video_choice.h"
+#include "io/video_codecs.h"
 #include "io/video_encoder.h"
 #include "timeline/rules.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel {
 
@@ -25,15 +27,18 @@ int run_encode(const EncodeOptions& o) {
   const std::optional<Manifest> manifest = read_manifest_argument(o.dir + "/manifest.json");
   const ManifestHeader& h = manifest->header;
   const std::string codec = o.codec.empty() ? codec_of_output(o.output, h.codec, "-o") : o.codec;
-  if (!is_known_codec(codec))
-    throw UsageError("unknown codec '" + codec + "' (h264 | ffv1 | prores)");
+  const VideoCodecRule* rule = find_video_codec_rule(codec);
+  if (!rule) throw UsageError("unknown codec '" + codec + "' (" + known_video_codecs() + ")");
+  if (std::string missing = missing_video_encoder(codec); !missing.empty())
+    throw UsageError(missing);
   // The container must hold the codec: refused here, before a temporary video is created.
   const std::string name = std::filesystem::path(o.output).filename().string();
   if (std::string problem = check_video_name(name, codec); !problem.empty())
     throw UsageError("-o " + o.output + ": " + problem.substr(problem.find(':') + 2));
-  if (codec == "h264" && (h.width % 2 || h.height % 2))
-    throw UsageError("h264 (yuv420p) needs an even width and height; the frames are " +
-                     std::to_string(h.width) + "x" + std::to_string(h.height));
+  if (rule->even_size && (h.width % 2 || h.height % 2))
+    throw UsageError(codec + " (" + rule->pix_fmt +
+                     ") needs an even width and height; the frames are " + std::to_string(h.width) +
+                     "x" + std::to_string(h.height));
   Rational fps{h.fps_num, h.fps_den};
   if (!o.fps.empty()) fps = parse_fps_option(o.fps);
   // Every frame of the timeline must be there: a video with a hole is not the timeline's video.
@@ -68,10 +73,14 @@ void add_encode_command(CLI::App& app, int& status) {
   cmd->add_option("DIR", o->dir, "render output folder (with manifest.json)")->required();
   cmd->add_option("-o,--output", o->output, "video file to write")->required();
   cmd->add_option("--codec", o->codec,
-                  "h264 | ffv1 | prores (default: the container's: .mp4 h264, .mkv ffv1, .mov "
-                  "prores; a .mkv or .mov of a render in another codec that fits it asks)");
+                  "h264 | h264-10bit | hevc | hevc-10bit | vp9 | av1 | ffv1 | prores (default: "
+                  "the container's: .mp4 h264, .mkv ffv1, .mov prores, .webm vp9; a container "
+                  "that also fits the render's codec asks)");
   cmd->add_option("--fps", o->fps, "frame rate, integer or N/D (default: the timeline's)");
-  cmd->add_option("--crf", o->crf, "h264 quality, 0..51")->check(CLI::Range(0, 51));
+  cmd->add_option("--crf", o->crf,
+                  "quality of the lossy codecs (h264, hevc, vp9, av1, their 10-bit kinds), 0..51, "
+                  "lower is better")
+      ->check(CLI::Range(0, 51));
   cmd->callback([o, &status] { status = run_encode(*o); });
 }
 

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "cli/commands_impl.h"
-#include "cli/frame_format_check.h"
 #include "cli/interrupt_guard.h"
+#include "cli/output_checks.h"
 #include "cli/output_folder.h"
 #include "cli/progress.h"
 #include "io/atomic_file.h"
@@ -68,6 +68,7 @@ int run_render(const RenderOptions& o) {
   validate_frame_formats(tl);
   const std::vector<int> frames = selected_frames(tl, o);
   const bool want_video = makes_video(tl, o, frames.size());
+  validate_video_encoder(tl, want_video);
   // Everything that can fail on bad input or a missing backend happens before the first write.
   FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());

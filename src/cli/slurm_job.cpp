@@ -6,6 +6,7 @@
 
 #include "cli/render_options.h"
 #include "pipeline/errors.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel {
 
@@ -89,7 +90,7 @@ SlurmJob make_slurm_job(const SlurmOptions& o) {
   if (!o.quality.empty()) job.render_args.insert(job.render_args.end(), {"--quality", o.quality});
   // The timeline's codec and quality: encode would take the codec from the container.
   job.encode_args = {"--codec", tl.codec};
-  if (tl.codec == "h264")
+  if (const VideoCodecRule* rule = find_video_codec_rule(tl.codec); rule && rule->takes_crf)
     job.encode_args.insert(job.encode_args.end(), {"--crf", std::to_string(tl.crf)});
   return job;
 }

@@ -12,8 +12,14 @@ namespace {
 
 // Threads: a fixed count, never "auto", so the bytes do not depend on the machine's cores. x264's
 // frame threads and FFV1/ProRes slices are deterministic for a given count.
+// x265, libvpx and libaom give the same bytes for a given thread count as well.
 const VideoCodecSpec kCodecs[] = {
     {"h264", "libx264", AV_PIX_FMT_YUV420P, true, true, 4},
+    {"h264-10bit", "libx264", AV_PIX_FMT_YUV420P10LE, true, true, 4},
+    {"hevc", "libx265", AV_PIX_FMT_YUV420P, true, true, 4},
+    {"hevc-10bit", "libx265", AV_PIX_FMT_YUV420P10LE, true, true, 4},
+    {"vp9", "libvpx-vp9", AV_PIX_FMT_YUV420P, true, true, 4},
+    {"av1", "libaom-av1", AV_PIX_FMT_YUV420P, true, true, 4},
     // FFV1 keeps rgb48 losslessly as planar gbrp16le.
     {"ffv1", "ffv1", AV_PIX_FMT_GBRP16LE, false, false, 4},
     {"prores", "prores_ks", AV_PIX_FMT_YUV444P10LE, true, false, 4},
@@ -30,6 +36,14 @@ const VideoCodecSpec* find_video_codec(const std::string& name) {
   for (const VideoCodecSpec& c : kCodecs)
     if (name == c.name) return &c;
   return nullptr;
+}
+
+std::string missing_video_encoder(const std::string& codec) {
+  const VideoCodecSpec* spec = find_video_codec(codec);
+  if (!spec) return "unknown codec '" + codec + "' (known: " + known_video_codecs() + ")";
+  if (avcodec_find_encoder_by_name(spec->encoder)) return "";
+  return "codec " + codec + " needs libav's " + spec->encoder +
+         " encoder, which this machine's libav lacks (`ffmpeg -encoders` lists what it has)";
 }
 
 std::string known_video_codecs() {
@@ -56,17 +70,29 @@ void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int 
   ctx->colorspace = spec.yuv ? AVCOL_SPC_BT709 : AVCOL_SPC_RGB;
   ctx->color_range = spec.yuv ? AVCOL_RANGE_MPEG : AVCOL_RANGE_JPEG;
 
-  const std::string name = spec.name;
-  if (name == "h264") {
+  const std::string encoder = spec.encoder;
+  if (encoder == "libx264") {
     set_private_option(ctx, "preset", "medium");
     set_private_option(ctx, "crf", std::to_string(crf));
     // x264 r3095's AVX-512 code reads memory it never wrote (in mbtree): two encodes in one
     // process then differ with whatever the heap held before. Its AVX2 code gives the same bytes
     // without that, and every AVX-512 CPU has AVX2.
     if (av_get_cpu_flags() & AV_CPU_FLAG_AVX512) set_private_option(ctx, "x264-params", "asm=AVX2");
-  } else if (name == "ffv1") {
+  } else if (encoder == "libx265") {
+    set_private_option(ctx, "preset", "medium");
+    set_private_option(ctx, "crf", std::to_string(crf));
+    // x265 prints its settings on stderr, which belongs to the progress display; its thread
+    // pool would size itself to the machine.
+    set_private_option(ctx, "x265-params", "log-level=error:pools=4:frame-threads=2");
+  } else if (encoder == "libvpx-vp9" || encoder == "libaom-av1") {
+    ctx->bit_rate = 0;  // constant quality: crf alone
+    set_private_option(ctx, "crf", std::to_string(crf));
+    // Speed over the last percent of compression: the defaults take minutes a second of video.
+    set_private_option(ctx, "cpu-used", encoder == "libaom-av1" ? "6" : "4");
+    set_private_option(ctx, "row-mt", "1");
+  } else if (spec.name == std::string("ffv1")) {
     ctx->level = 3;  // FFV1 version 3: slices, CRCs, multithreaded decoding
-  } else if (name == "prores") {
+  } else if (encoder == "prores_ks") {
     set_private_option(ctx, "profile", "4444");
   }
 }

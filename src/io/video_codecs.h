@@ -8,7 +8,7 @@
 namespace sdfreel {
 
 struct VideoCodecSpec {
-  const char* name;       // h264 | ffv1 | prores
+  const char* name;       // timeline/video_codec_rules.h's names
   const char* encoder;    // libav encoder name
   AVPixelFormat pix_fmt;  // what the encoder is fed
   bool yuv;               // RGB -> Y'CbCr with the BT.709 matrix, limited (tv) range
@@ -17,7 +17,9 @@ struct VideoCodecSpec {
 };
 
 const VideoCodecSpec* find_video_codec(const std::string& name);  // nullptr when unknown
-std::string known_video_codecs();                                 // "h264, ffv1, prores"
+std::string known_video_codecs();                                 // "h264, ..., prores"
+// "" when this machine's libav has the codec's encoder; else what is missing, for the user.
+std::string missing_video_encoder(const std::string& codec);
 
 // Sets size, rates, pixel format, colour tags and the codec's own options before avcodec_open2.
 void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int width, int height,

@@ -61,7 +61,7 @@ struct VideoEncoder::Impl {
     const AVOutputFormat* container = av_guess_format(nullptr, s.path.c_str(), nullptr);
     if (!container)
       throw std::runtime_error("video: cannot tell the container from the file name " + s.path +
-                               " (use .mp4, .mkv or .mov)");
+                               " (use .mp4, .mkv, .mov or .webm)");
     const AVCodec* codec = avcodec_find_encoder_by_name(spec.encoder);
     if (!codec)
       throw std::runtime_error(std::string("video: this libav has no encoder ") + spec.encoder);
@@ -128,6 +128,9 @@ struct VideoEncoder::Impl {
     if (!stream) throw std::runtime_error("video: out of memory");
     av_check(avcodec_parameters_from_context(stream->codecpar, encoder.get()),
              "copying encoder parameters");
+    // HEVC in MP4 and MOV as hvc1 (parameter sets in the header): what Apple's players take.
+    if (encoder->codec_id == AV_CODEC_ID_HEVC && is_mov_family(container))
+      stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
     stream->time_base = encoder->time_base;  // a hint; the muxer may pick its own
     stream->avg_frame_rate = encoder->framerate;
 

@@ -9,11 +9,11 @@
 namespace sdfreel {
 
 struct VideoSettings {
-  std::string path;   // .mp4 (h264), .mkv (ffv1), .mov (prores); the container follows the path
-  std::string codec;  // h264 | ffv1 | prores
+  std::string path;   // .mp4, .mkv, .mov, .webm; the container follows the path
+  std::string codec;  // timeline/video_codec_rules.h's names
   int width = 0, height = 0;
   Rational fps;
-  int crf = 18;  // h264 only
+  int crf = 18;  // the lossy codecs
 };
 
 class VideoEncoder {

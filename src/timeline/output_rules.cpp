@@ -13,13 +13,14 @@ struct Container {
   const char* usual;  // the codec the extension stands for when none is named
   // Our rule, the same on every FFmpeg: pairings libav's muxer accepts (tests/cli checks each
   // against the installed libav; a newer one may accept more).
-  const char* codecs[3];
+  const char* codecs[8];
 };
 
 constexpr Container kContainers[] = {
-    {".mp4", "h264", {"h264"}},
-    {".mkv", "ffv1", {"h264", "ffv1", "prores"}},
-    {".mov", "prores", {"h264", "prores"}},
+    {".mp4", "h264", {"h264", "h264-10bit", "hevc", "hevc-10bit", "av1"}},
+    {".mkv", "ffv1", {"h264", "h264-10bit", "hevc", "hevc-10bit", "vp9", "av1", "ffv1", "prores"}},
+    {".mov", "prores", {"h264", "h264-10bit", "hevc", "hevc-10bit", "prores"}},
+    {".webm", "vp9", {"vp9", "av1"}},
 };
 
 std::string lower_extension(const std::string& name) {
@@ -75,7 +76,8 @@ std::string check_video_name(const std::string& name, const std::string& codec) 
     return "output.video '" + name + "': a " + ext + " file cannot hold codec " + codec + " (use " +
            fitting + ")";
   }
-  return "output.video '" + name + "': unknown container '" + ext + "' (use .mp4, .mkv or .mov)";
+  return "output.video '" + name + "': unknown container '" + ext +
+         "' (use .mp4, .mkv, .mov or .webm)";
 }
 
 }  // namespace sdfreel

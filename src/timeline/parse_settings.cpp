@@ -8,6 +8,7 @@
 #include "timeline/rules.h"
 #include "timeline/sections.h"
 #include "timeline/suggest.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel {
 namespace {
@@ -184,10 +185,14 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   parse_frame_files(r, *output, tl);
   if (const toml::node* n = output->get("video")) tl.video = r.string(*n, "output.video");
   if (const toml::node* n = output->get("codec")) {
-    const std::vector<std::string> codecs = {"h264", "ffv1", "prores"};
+    const std::vector<std::string> codecs = video_codec_names();
     std::string c = r.string(*n, "output.codec");
-    if (std::find(codecs.begin(), codecs.end(), c) == codecs.end())
-      r.fail(*n, "unknown codec '" + c + "': use h264, ffv1 or prores" + did_you_mean(c, codecs));
+    if (std::find(codecs.begin(), codecs.end(), c) == codecs.end()) {
+      std::string list;
+      for (size_t i = 0; i < codecs.size(); ++i)
+        list += (i ? (i + 1 == codecs.size() ? " or " : ", ") : "") + codecs[i];
+      r.fail(*n, "unknown codec '" + c + "': use " + list + did_you_mean(c, codecs));
+    }
     tl.codec = c;
   }
   if (const toml::node* n = output->get("crf")) tl.crf = int(r.integer_in(*n, "output.crf", 0, 51));

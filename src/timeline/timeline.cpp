@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "timeline/rules.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel {
 
@@ -47,12 +48,14 @@ std::string check_samples(int64_t samples) {
 }
 
 std::string check_codec_size(const std::string& codec, int64_t width, int64_t height) {
-  if (codec != "h264" || (width % 2 == 0 && height % 2 == 0)) return "";
+  const VideoCodecRule* rule = find_video_codec_rule(codec);
+  if (!rule || !rule->even_size || (width % 2 == 0 && height % 2 == 0)) return "";
   // Round odd sizes up: the result stays within 1..16384 because 16384 is even.
   auto even = [](int64_t v) { return v % 2 == 0 ? v : v + 1; };
   return "resolution " + std::to_string(width) + "x" + std::to_string(height) +
-         " has an odd side, but codec h264 (yuv420p) needs an even width and height: use " +
-         std::to_string(even(width)) + "x" + std::to_string(even(height));
+         " has an odd side, but codec " + codec + " (" + rule->pix_fmt +
+         ") needs an even width and height: use " + std::to_string(even(width)) + "x" +
+         std::to_string(even(height));
 }
 
 void validate_overrides(const Timeline& tl, bool makes_video) {

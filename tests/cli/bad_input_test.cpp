@@ -40,7 +40,7 @@ std::vector<BadCase> bad_cases() {
       {"unknown_scene", replace(good, "sdf_morph", "sdf_morf"), "sdf_morf"},
       {"unknown_param", replace(good, "morph_period = 2.0", "morph_perod = 2.0"), "morph_period"},
       {"param_range", replace(good, "morph_period = 2.0", "morph_period = -5.0"), "morph_period"},
-      {"unknown_codec", replace(good, "codec = \"ffv1\"", "codec = \"vp9\""), "vp9"},
+      {"unknown_codec", replace(good, "codec = \"ffv1\"", "codec = \"vp8\""), "vp8"},
       {"odd_h264",
        replace(replace(good, "codec = \"ffv1\"", "codec = \"h264\""), "[64, 36]", "[63, 36]"),
        "64x36"},

@@ -46,5 +46,25 @@ TEST(Encode, ARenderInACodecTheContainerCannotHoldTakesTheContainers) {
   expect_encoded(dir, "other.mp4", "", "(2 frames, h264)");  // ffv1 cannot go in a .mp4
 }
 
+// WebM: its usual codec is vp9; a render in av1, which a .webm also holds, is asked which.
+TEST(Encode, AWebmTakesVp9AndAsksARenderInAv1) {
+  const std::string dir = scratch_dir("encode-webm");
+  write_file(dir + "/t.toml", small_timeline(3, "av1", "v.webm"));
+  const RunResult r = run_sdfreel("render t.toml", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string video = read_file(dir + "/out/v.webm");
+  ASSERT_GT(video.size(), 4u);
+  EXPECT_EQ(video.substr(0, 4), "\x1a\x45\xdf\xa3");  // EBML: Matroska and WebM
+  const RunResult asked = run_sdfreel("encode out -o a.webm", dir);
+  EXPECT_EQ(asked.status, 2);
+  EXPECT_NE(asked.err.find("say which with --codec vp9 or --codec av1"), std::string::npos)
+      << asked.err;
+  EXPECT_FALSE(fs::exists(dir + "/a.webm"));
+  expect_encoded(dir, "a.webm", " --codec vp9", "(3 frames, vp9)");
+  const RunResult wrong = run_sdfreel("encode out -o b.webm --codec h264", dir);
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("cannot hold codec h264"), std::string::npos) << wrong.err;
+}
+
 }  // namespace
 }  // namespace sdfreel::test

@@ -77,10 +77,13 @@ std::array<double, 3> bt709_pixel_to_rgb(const AVFrame& f, int x, int y) {
     luma = (f.data[0][y * f.linesize[0] + x] - 16.0) / 219.0;
     cb = (f.data[1][(y / 2) * f.linesize[1] + x / 2] - 128.0) / 224.0;
     cr = (f.data[2][(y / 2) * f.linesize[2] + x / 2] - 128.0) / 224.0;
-  } else if (f.format == AV_PIX_FMT_YUV444P10LE || f.format == AV_PIX_FMT_YUV444P12LE) {
-    const double scale = f.format == AV_PIX_FMT_YUV444P10LE ? 4.0 : 16.0;  // from 8-bit levels
+  } else if (f.format == AV_PIX_FMT_YUV444P10LE || f.format == AV_PIX_FMT_YUV444P12LE ||
+             f.format == AV_PIX_FMT_YUV420P10LE) {
+    const double scale = f.format == AV_PIX_FMT_YUV444P12LE ? 16.0 : 4.0;  // from 8-bit levels
+    const int sub = f.format == AV_PIX_FMT_YUV420P10LE ? 2 : 1;  // chroma halved both ways
     auto at = [&](int p) {
-      const uint8_t* b = f.data[p] + size_t(y) * f.linesize[p] + size_t(x) * 2;
+      const int px = p ? x / sub : x, py = p ? y / sub : y;
+      const uint8_t* b = f.data[p] + size_t(py) * f.linesize[p] + size_t(px) * 2;
       return double(b[0] | (b[1] << 8)) / scale;
     };
     luma = (at(0) - 16.0) / 219.0;

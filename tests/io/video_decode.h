@@ -23,7 +23,7 @@ DecodedVideo decode_video(const std::string& path);
 std::vector<uint16_t> gbrp16_to_rgb48(const AVFrame& f);
 
 // Full-range RGB in 0..1 from one pixel of a limited-range BT.709 Y'CbCr frame (yuv420p or
-// yuv444p10le/12le), using the BT.709 matrix (Kr = 0.2126, Kb = 0.0722).
+// yuv420p10le, yuv444p10le/12le), using the BT.709 matrix (Kr = 0.2126, Kb = 0.0722).
 std::array<double, 3> bt709_pixel_to_rgb(const AVFrame& f, int x, int y);
 
 // Runs a shell command; returns its stdout and sets *status to its exit status.

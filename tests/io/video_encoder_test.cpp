@@ -19,7 +19,10 @@ namespace {
 
 using VideoEncoderTest = VideoTest;
 
-const char* const kCodecFiles[][2] = {{"h264", "v.mp4"}, {"ffv1", "v.mkv"}, {"prores", "v.mov"}};
+const char* const kCodecFiles[][2] = {{"h264", "v.mp4"},    {"ffv1", "v.mkv"},
+                                      {"prores", "v.mov"},  {"h264-10bit", "h10.mp4"},
+                                      {"hevc", "hevc.mp4"}, {"hevc-10bit", "hevc10.mkv"},
+                                      {"vp9", "vp9.webm"},  {"av1", "av1.webm"}};
 
 std::vector<ImageRGB16> some_frames() {
   std::vector<ImageRGB16> frames;
@@ -96,7 +99,8 @@ TEST_F(VideoEncoderTest, KnownCodecs) {
   EXPECT_TRUE(is_known_codec("ffv1"));
   EXPECT_TRUE(is_known_codec("prores"));
   EXPECT_FALSE(is_known_codec("H264"));
-  EXPECT_FALSE(is_known_codec("vp9"));
+  EXPECT_TRUE(is_known_codec("vp9"));
+  EXPECT_FALSE(is_known_codec("vp8"));
   EXPECT_FALSE(is_known_codec(""));
 }
 
@@ -110,7 +114,7 @@ TEST_F(VideoEncoderTest, BadSettingsAreRefusedClearly) {
     const char* message_part;
   };
   const Case cases[] = {
-      {"a.mp4", "vp9", 64, 36, {30, 1}, "unknown codec"},
+      {"a.mp4", "vp8", 64, 36, {30, 1}, "unknown codec"},
       {"a.xyz", "h264", 64, 36, {30, 1}, "container"},
       {"a.mp4", "h264", 64, 35, {30, 1}, "even"},
       {"a.mkv", "ffv1", 0, 36, {30, 1}, "size"},

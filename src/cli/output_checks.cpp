@@ -1,8 +1,9 @@
-#include "cli/frame_format_check.h"
+#include "cli/output_checks.h"
 
 #include <stdexcept>
 
 #include "io/image_plugin.h"
+#include "io/video_codecs.h"
 
 namespace sdfreel {
 
@@ -21,6 +22,12 @@ void validate_frame_formats(const Timeline& tl) {
                            " files; use exr, png, tiff, tif, dpx, jpg or the extension of "
                            "another format it writes");
   }
+}
+
+void validate_video_encoder(const Timeline& tl, bool makes_video) {
+  if (!makes_video || tl.video.empty()) return;
+  if (std::string missing = missing_video_encoder(tl.codec); !missing.empty())
+    throw InputError(tl.path, 0, 0, "output.codec: " + missing);
 }
 
 }  // namespace sdfreel
