@@ -13,8 +13,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libpng-dev libopenexr-dev libopencolorio-dev libglm-dev
-  libopenimageio-dev   # image channels of a shader, in a module opened on use (not at start-up)
-  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libopenimageio-dev   # image channels, frame formats beyond EXR/PNG: a module opened on use
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   libbenchmark-dev   # `sdfreel bench --micro`
   # The GL backend: headers only at build time (libEGL and libOSMesa are opened at run time).

@@ -8,6 +8,7 @@
 #include "cli/commands_impl.h"
 #include "cli/output_checks.h"
 #include "cli/output_folder.h"
+#include "cli/soundtrack.h"
 #include "io/frame_formats.h"
 #include "pipeline/frame_memory.h"
 #include "render/adaptive_sampling.h"
@@ -74,6 +75,14 @@ void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<
                 tl.codec.c_str(), tl.crf);
   else
     std::printf("video:      %s/%s (%s)\n", tl.out_dir.c_str(), tl.video.c_str(), tl.codec.c_str());
+  if (!tl.audio.path.empty()) {
+    char fade[64] = "";
+    if (tl.audio.fade > 0)
+      std::snprintf(fade, sizeof fade, ", fading out over the last %.6g s", tl.audio.fade);
+    const std::string codec = soundtrack_encoder_for(tl.video);
+    std::printf("audio:      %s from %.6g s%s, as %s\n", tl.audio.path.c_str(), tl.audio.offset,
+                fade, tl.video.empty() ? "nothing yet (no video)" : codec.c_str());
+  }
 }
 
 int run_check(const RenderOptions& o) {
@@ -83,6 +92,7 @@ int run_check(const RenderOptions& o) {
   check_frame_memory(tl);  // render's pipeline checks it; check makes none for a built-in scene
   const std::vector<int> frames = selected_frames(tl, o);
   validate_video_encoder(tl, makes_video(tl, o, frames.size()));
+  check_soundtrack(tl);
   const SceneInfo* scene = timeline_scene(tl);
   if (!scene) throw UsageError("unknown scene '" + tl.scene + "'");
   if (tl.shader_scene) {

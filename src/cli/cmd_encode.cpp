@@ -7,6 +7,7 @@
 #include "cli/commands_impl.h"
 #include "cli/manifest_input.h"
 #include "cli/output_folder.h"
+#include "cli/soundtrack.h"
 #include "cli/time_overrides.h"
 #include "cli/video_choice.h"
 #include "io/video_codecs.h"
@@ -49,7 +50,8 @@ int run_encode(const EncodeOptions& o) {
       return 1;
     }
   DisplayTransform display(h.color_config, h.display, h.view);
-  VideoEncoder encoder(VideoSettings{o.output, codec, h.width, h.height, fps, o.crf});
+  VideoEncoder encoder(VideoSettings{o.output, codec, h.width, h.height, fps, o.crf,
+                                     encode_soundtrack_of(h, fps, o.output)});
   for (int i = 0; i < h.frame_count; ++i) {
     std::string why;
     auto shown = load_checked_frame(o.dir, h, manifest->frames.at(i), display, &why);

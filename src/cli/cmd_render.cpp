@@ -10,6 +10,7 @@
 #include "cli/output_checks.h"
 #include "cli/output_folder.h"
 #include "cli/progress.h"
+#include "cli/soundtrack.h"
 #include "io/atomic_file.h"
 #include "io/folder_claim.h"
 #include "io/frame_formats.h"
@@ -69,6 +70,8 @@ int run_render(const RenderOptions& o) {
   const std::vector<int> frames = selected_frames(tl, o);
   const bool want_video = makes_video(tl, o, frames.size());
   validate_video_encoder(tl, want_video);
+  check_soundtrack(tl);
+  const auto soundtrack = render_soundtrack(tl, frames, tl.out_dir + "/" + tl.video, want_video);
   // Everything that can fail on bad input or a missing backend happens before the first write.
   FramePipeline pipe(tl, timeline_backend(tl, o));
   const ManifestHeader header = manifest_header(tl, pipe.backend());
@@ -117,7 +120,8 @@ int run_render(const RenderOptions& o) {
   std::unique_ptr<VideoEncoder> encoder;
   if (want_video)
     encoder = std::make_unique<VideoEncoder>(
-        VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf});
+        VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf,
+                      soundtrack});
 
   if (frames.empty())  // a shard of more parts than frames
     std::fprintf(stderr, "note: --shard %s of %d frames selects none: nothing to render\n",

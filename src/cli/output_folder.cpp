@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/soundtrack.h"
 #include "io/frame_files.h"
 #include "io/frame_formats.h"
 #include "io/hashing.h"
@@ -43,6 +44,10 @@ ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
   h.video = tl.video;
   h.frame_files = timeline_frame_files(tl);
   h.frame_options = frame_option_values(h.frame_files, tl.frame_options);
+  h.audio_path = tl.audio.path;
+  h.audio_sha256 = soundtrack_sha256(tl);
+  h.audio_offset = tl.audio.offset;
+  h.audio_fade = tl.audio.fade;
   return h;
 }
 

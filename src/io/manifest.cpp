@@ -103,6 +103,11 @@ std::string manifest_to_json(const Manifest& m) {
         !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
     j["frame_options"][key] = number ? json(std::stoi(value)) : json(value);
   }
+  if (!h.audio_path.empty())
+    j["audio"] = {{"path", h.audio_path},
+                  {"sha256", h.audio_sha256},
+                  {"offset", h.audio_offset},
+                  {"fade", h.audio_fade}};
   if (!m.frames.empty()) j["frame_range"] = {m.frames.begin()->first, m.frames.rbegin()->first};
   json frames = json::array();
   for (const auto& [i, f] : m.frames) frames.push_back(manifest_frame_json(f));
@@ -143,6 +148,13 @@ Manifest manifest_from_json(const std::string& text) {
             value.is_string()
                 ? value.get<std::string>()
                 : std::to_string(int_field(value, "frame_options." + key, 0, kIntMax));
+    if (j.contains("audio")) {
+      const json& a = j.at("audio");
+      h.audio_path = a.at("path");
+      h.audio_sha256 = a.at("sha256");
+      h.audio_offset = a.at("offset").get<double>();
+      h.audio_fade = a.at("fade").get<double>();
+    }
     for (const json& f : j.at("frames")) {
       const ManifestFrame fr = manifest_frame_from_json(f, h.frame_count);
       m.frames[fr.index] = fr;

@@ -44,6 +44,10 @@ struct ManifestHeader {
   // The [output] options that shape those files ("tiff_bits": 32), absent in the JSON when there
   // are none (io/frame_formats.h); numbers are written as JSON numbers.
   std::map<std::string, std::string> frame_options;
+  // The soundtrack ([output] audio) `encode` puts under the video; "" none. Not compared by
+  // same_render_as: the audio changes no frame.
+  std::string audio_path, audio_sha256;
+  double audio_offset = 0.0, audio_fade = 0.0;
   bool same_render_as(
       const ManifestHeader& o) const;  // all fields but timeline_path/versions order
 };

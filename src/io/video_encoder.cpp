@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/audio_track.h"
 #include "io/video_av.h"
 #include "io/video_codecs.h"
 #include "io/video_sink.h"
@@ -49,6 +50,8 @@ struct VideoEncoder::Impl {
   AvOutputContextPtr format;
   AvCodecContextPtr encoder;
   AVStream* stream = nullptr;  // owned by format
+  AVStream* audio_stream = nullptr;
+  size_t audio_written = 0;  // settings.audio's packets already muxed
   SwsContextPtr converter;
   AvFramePtr frame;
   AvPacketPtr packet;
@@ -134,6 +137,14 @@ struct VideoEncoder::Impl {
     stream->time_base = encoder->time_base;  // a hint; the muxer may pick its own
     stream->avg_frame_rate = encoder->framerate;
 
+    if (settings.audio) {
+      audio_stream = avformat_new_stream(format.get(), nullptr);
+      if (!audio_stream) throw std::runtime_error("video: out of memory");
+      av_check(avcodec_parameters_copy(audio_stream->codecpar, settings.audio->params),
+               "copying audio parameters");
+      audio_stream->time_base = settings.audio->time_base;
+    }
+
     format->pb = sink->avio();
     format->flags |= AVFMT_FLAG_CUSTOM_IO;
     AVDictionary* options = nullptr;
@@ -141,6 +152,22 @@ struct VideoEncoder::Impl {
     const int ret = avformat_write_header(format.get(), &options);
     av_dict_free(&options);
     av_check(ret, "writing the header of " + settings.path);
+  }
+
+  // Muxes the soundtrack's packets that start before `dts` (in `tb`; all of them for INT64_MAX),
+  // so the file interleaves audio and video in time order as they arrive.
+  void write_audio_until(int64_t dts, AVRational tb) {
+    if (!settings.audio) return;
+    const auto& packets = settings.audio->packets;
+    for (; audio_written < packets.size(); ++audio_written) {
+      const AVPacket& p = *packets[audio_written];
+      if (dts != INT64_MAX && av_compare_ts(p.pts, settings.audio->time_base, dts, tb) > 0) return;
+      AvPacketPtr copy(av_packet_clone(&p));
+      if (!copy) throw std::runtime_error("video: out of memory");
+      av_packet_rescale_ts(copy.get(), settings.audio->time_base, audio_stream->time_base);
+      copy->stream_index = audio_stream->index;
+      av_check(av_interleaved_write_frame(format.get(), copy.get()), "writing the audio");
+    }
   }
 
   // Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
@@ -152,6 +179,7 @@ struct VideoEncoder::Impl {
       av_check(ret, "encoding a frame");
       av_packet_rescale_ts(packet.get(), encoder->time_base, stream->time_base);
       packet->stream_index = stream->index;
+      write_audio_until(packet->dts, stream->time_base);
       // Takes the packet's data and leaves it blank, so nothing accumulates per frame.
       av_check(av_interleaved_write_frame(format.get(), packet.get()), "writing a packet");
     }
@@ -177,6 +205,7 @@ struct VideoEncoder::Impl {
   void finish() {
     if (finished) return;
     encode(nullptr);
+    write_audio_until(INT64_MAX, AVRational{1, 1});
     av_check(av_write_trailer(format.get()), "finishing " + settings.path);
     sink->commit();
     finished = true;

@@ -8,12 +8,15 @@
 
 namespace sdfreel {
 
+struct EncodedAudio;  // io/audio_track.h
+
 struct VideoSettings {
   std::string path;   // .mp4, .mkv, .mov, .webm; the container follows the path
   std::string codec;  // timeline/video_codec_rules.h's names
   int width = 0, height = 0;
   Rational fps;
-  int crf = 18;  // the lossy codecs
+  int crf = 18;                               // the lossy codecs
+  std::shared_ptr<const EncodedAudio> audio;  // a soundtrack to interleave, or none
 };
 
 class VideoEncoder {

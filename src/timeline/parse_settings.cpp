@@ -174,7 +174,7 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
   if (!output) return;
   r.check_keys(*output, "[output]",
                {"dir", "frames", "video", "codec", "crf", "tiff_bits", "dpx_bits", "jpeg_quality",
-                "exr_compression", "exr_bits"});
+                "exr_compression", "exr_bits", "audio", "audio_offset", "audio_fade"});
 
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");
@@ -183,6 +183,7 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
       r.fail(*n, problem);
   }
   parse_frame_files(r, *output, tl);
+  parse_soundtrack(r, *output, tl);
   if (const toml::node* n = output->get("video")) tl.video = r.string(*n, "output.video");
   if (const toml::node* n = output->get("codec")) {
     const std::vector<std::string> codecs = video_codec_names();

@@ -94,6 +94,14 @@ struct Timeline {
   std::vector<OtherFrames> other_frames;
   FrameFileOptions frame_options;
   std::string video;           // "" = no video
+  // [output] audio: a soundtrack under the video (io/audio_track.h), its path resolved against
+  // the timeline's folder, with where the key stands (it is opened when the command starts).
+  struct Soundtrack {
+    std::string path;     // "" = none
+    double offset = 0.0;  // seconds into the audio at video time 0
+    double fade = 0.0;    // seconds of fade-out at the video's end (0: none)
+    int line = 0, column = 0;
+  } audio;
   std::string codec = "h264";  // h264 | ffv1 | prores
   int crf = 18;
 

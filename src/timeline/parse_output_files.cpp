@@ -1,7 +1,9 @@
 // [output] frames: "exr" and "png" have writers of their own; any other name is a file extension
 // OpenImageIO writes, checked against its writers when the command starts
-// (validate_frame_formats), since this library does not link OpenImageIO.
+// (validate_frame_formats), since this library does not link OpenImageIO. [output] audio: the
+// soundtrack, opened when the command starts as well.
 #include <algorithm>
+#include <filesystem>
 
 #include "timeline/sections.h"
 
@@ -39,6 +41,31 @@ int one_of(const TomlReader& r, const toml::node& n, const std::string& name,
 }
 
 }  // namespace
+
+void parse_soundtrack(const TomlReader& r, const toml::table& output, Timeline& tl) {
+  const toml::node* n = output.get("audio");
+  for (const char* key : {"audio_offset", "audio_fade"})
+    if (!n && output.contains(key))
+      r.fail(*output.get(key), std::string("output.") + key + " needs output.audio, the file");
+  if (!n) return;
+  const std::string given = r.string(*n, "output.audio");
+  if (given.empty()) r.fail(*n, "output.audio is empty: name an audio file (.flac, .wav, ...)");
+  namespace fs = std::filesystem;
+  tl.audio.path = fs::path(given).is_absolute()
+                      ? given
+                      : (fs::path(r.file()).parent_path() / given).lexically_normal().string();
+  const toml::source_position at = n->source().begin;
+  tl.audio.line = int(at.line);
+  tl.audio.column = int(at.column);
+  if (const toml::node* o = output.get("audio_offset")) {
+    tl.audio.offset = r.number(*o, "output.audio_offset");
+    if (tl.audio.offset < 0) r.fail(*o, "output.audio_offset must be >= 0 seconds");
+  }
+  if (const toml::node* f = output.get("audio_fade")) {
+    tl.audio.fade = r.number(*f, "output.audio_fade");
+    if (tl.audio.fade < 0) r.fail(*f, "output.audio_fade must be >= 0 seconds");
+  }
+}
 
 void parse_frame_files(const TomlReader& r, const toml::table& output, Timeline& tl) {
   if (const toml::node* n = output.get("frames")) {
