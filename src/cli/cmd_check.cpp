@@ -79,7 +79,8 @@ void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<
     char fade[64] = "";
     if (tl.audio.fade > 0)
       std::snprintf(fade, sizeof fade, ", fading out over the last %.6g s", tl.audio.fade);
-    const std::string codec = soundtrack_encoder_for(tl.video);
+    std::string codec = soundtrack_encoder_for(tl.video);
+    if (codec.empty()) codec = "nothing: a .webp holds no sound";
     std::printf("audio:      %s from %.6g s%s, as %s\n", tl.audio.path.c_str(), tl.audio.offset,
                 fade, tl.video.empty() ? "nothing yet (no video)" : codec.c_str());
   }

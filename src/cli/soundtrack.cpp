@@ -1,5 +1,6 @@
 #include "cli/soundtrack.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "io/audio_source.h"
@@ -35,7 +36,12 @@ void check_soundtrack(const Timeline& tl) {
 }
 
 std::string soundtrack_sha256(const Timeline& tl) {
-  return tl.audio.path.empty() ? "" : file_sha256(tl.audio.path);
+  if (tl.audio.path.empty()) return "";
+  try {
+    return file_sha256(tl.audio.path);
+  } catch (const std::exception&) {
+    return "";  // verify needs no audio; render checked it first (check_soundtrack)
+  }
 }
 
 std::shared_ptr<const EncodedAudio> render_soundtrack(const Timeline& tl,
@@ -57,6 +63,11 @@ std::shared_ptr<const EncodedAudio> render_soundtrack(const Timeline& tl,
 std::shared_ptr<const EncodedAudio> encode_soundtrack_of(const ManifestHeader& h, Rational fps,
                                                          const std::string& video_path) {
   if (h.audio_path.empty()) return nullptr;
+  if (soundtrack_encoder_for(video_path).empty()) {
+    std::fprintf(stderr, "note: %s holds no sound: the render's soundtrack is left out\n",
+                 video_path.c_str());
+    return nullptr;
+  }
   std::string now;
   try {
     now = file_sha256(h.audio_path);

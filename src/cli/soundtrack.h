@@ -14,7 +14,8 @@ namespace sdfreel {
 // Throws InputError at [output] audio's place when its file is missing, holds no audio libav
 // decodes, or is larger than 1 GiB. Nothing when the timeline has none.
 void check_soundtrack(const Timeline& tl);
-// SHA-256 of the audio file's bytes, for the manifest ("" when the timeline has none).
+// SHA-256 of the audio file's bytes, for the manifest ("" when the timeline has none, or when
+// the file cannot be read: only render, which checks it first, needs the hash).
 std::string soundtrack_sha256(const Timeline& tl);
 
 // The soundtrack under a render's video of `frames` (the first at frames[0] / fps), or nullptr

@@ -68,7 +68,8 @@ std::string soundtrack_encoder_for(const std::string& video_path) {
   const std::string ext = lower_extension(video_path);
   if (ext == ".mp4") return "aac";
   if (ext == ".mov") return "pcm_s16le";
-  return "libopus";  // .webm, .mkv
+  if (ext == ".webm" || ext == ".mkv") return "libopus";
+  return "";  // .webp: no sound
 }
 
 std::shared_ptr<const EncodedAudio> encode_soundtrack(const AudioCut& cut,
@@ -76,6 +77,9 @@ std::shared_ptr<const EncodedAudio> encode_soundtrack(const AudioCut& cut,
   AudioSource source(cut.path, cut.offset);
   auto result = std::make_shared<EncodedAudio>();
   result->encoder = soundtrack_encoder_for(video_path);
+  if (result->encoder.empty())
+    throw std::runtime_error("a " + lower_extension(video_path) +
+                             " video holds no sound: use .mp4, .webm, .mkv or .mov");
   const AVCodec* codec = avcodec_find_encoder_by_name(result->encoder.c_str());
   if (!codec)
     throw std::runtime_error("audio: this machine's libav has no " + result->encoder + " encoder");

@@ -23,6 +23,8 @@ const VideoCodecSpec kCodecs[] = {
     // FFV1 keeps rgb48 losslessly as planar gbrp16le.
     {"ffv1", "ffv1", AV_PIX_FMT_GBRP16LE, false, false, 4},
     {"prores", "prores_ks", AV_PIX_FMT_YUV444P10LE, true, false, 4},
+    // libwebp converts the RGB itself (BT.601, as WebP decoders expect); it runs on one thread.
+    {"webp", "libwebp_anim", AV_PIX_FMT_BGRA, false, false, 1},
 };
 
 void set_private_option(AVCodecContext* ctx, const char* key, const std::string& value) {
@@ -92,6 +94,9 @@ void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int 
     set_private_option(ctx, "row-mt", "1");
   } else if (spec.name == std::string("ffv1")) {
     ctx->level = 3;  // FFV1 version 3: slices, CRCs, multithreaded decoding
+  } else if (encoder == "libwebp_anim") {
+    // libwebp's quality runs the other way: crf 18 -> 82, crf 0 -> 100.
+    av_check(av_opt_set_double(ctx->priv_data, "quality", 100.0 - crf, 0), "setting webp quality");
   } else if (encoder == "prores_ks") {
     set_private_option(ctx, "profile", "4444");
   }

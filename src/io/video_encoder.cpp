@@ -64,7 +64,7 @@ struct VideoEncoder::Impl {
     const AVOutputFormat* container = av_guess_format(nullptr, s.path.c_str(), nullptr);
     if (!container)
       throw std::runtime_error("video: cannot tell the container from the file name " + s.path +
-                               " (use .mp4, .mkv, .mov or .webm)");
+                               " (use .mp4, .mkv, .mov, .webm or .webp)");
     const AVCodec* codec = avcodec_find_encoder_by_name(spec.encoder);
     if (!codec)
       throw std::runtime_error(std::string("video: this libav has no encoder ") + spec.encoder);
@@ -149,6 +149,8 @@ struct VideoEncoder::Impl {
     format->flags |= AVFMT_FLAG_CUSTOM_IO;
     AVDictionary* options = nullptr;
     if (is_mov_family(container)) av_dict_set(&options, "movflags", "+faststart", 0);
+    if (std::strcmp(container->name, "webp") == 0)
+      av_dict_set(&options, "loop", "0", 0);  // forever
     const int ret = avformat_write_header(format.get(), &options);
     av_dict_free(&options);
     av_check(ret, "writing the header of " + settings.path);

@@ -21,6 +21,7 @@ constexpr Container kContainers[] = {
     {".mkv", "ffv1", {"h264", "h264-10bit", "hevc", "hevc-10bit", "vp9", "av1", "ffv1", "prores"}},
     {".mov", "prores", {"h264", "h264-10bit", "hevc", "hevc-10bit", "prores"}},
     {".webm", "vp9", {"vp9", "av1"}},
+    {".webp", "webp", {"webp"}},
 };
 
 std::string lower_extension(const std::string& name) {
@@ -77,7 +78,7 @@ std::string check_video_name(const std::string& name, const std::string& codec) 
            fitting + ")";
   }
   return "output.video '" + name + "': unknown container '" + ext +
-         "' (use .mp4, .mkv, .mov or .webm)";
+         "' (use .mp4, .mkv, .mov, .webm or .webp)";
 }
 
 }  // namespace sdfreel

@@ -12,6 +12,7 @@ const std::vector<VideoCodecRule>& video_codec_rules() {
       {"av1", "AV1 (libaom), 8-bit 4:2:0", "yuv420p", true, true},
       {"ffv1", "FFV1, lossless 16-bit RGB", "gbrp16le", false, false},
       {"prores", "ProRes 4444 (prores_ks), 10-bit 4:4:4", "yuv444p10le", false, false},
+      {"webp", "animated WebP (libwebp), lossy, looping", "bgra", false, true},
   };
   return rules;
 }

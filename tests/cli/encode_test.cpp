@@ -61,6 +61,7 @@ TEST(Encode, AWebmTakesVp9AndAsksARenderInAv1) {
       << asked.err;
   EXPECT_FALSE(fs::exists(dir + "/a.webm"));
   expect_encoded(dir, "a.webm", " --codec vp9", "(3 frames, vp9)");
+  expect_encoded(dir, "loop.webp", "", "(3 frames, webp)");  // the container's only codec
   const RunResult wrong = run_sdfreel("encode out -o b.webm --codec h264", dir);
   EXPECT_EQ(wrong.status, 2);
   EXPECT_NE(wrong.err.find("cannot hold codec h264"), std::string::npos) << wrong.err;

@@ -66,6 +66,12 @@ TEST(Soundtrack, AMissingOrUndecodableFileIsExitTwoBeforeAnything) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("text.wav"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out"));
+  write_tone_wav(dir + "/tone.wav", 1.0, 48000, 0.0);
+  write_file(dir + "/t.toml", with_audio("audio = \"tone.wav\"\n"));
+  r = run_sdfreel("render t.toml --video loop.webp", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("a .webp video holds no sound"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
   write_file(dir + "/t.toml", with_audio("audio_fade = 1.0\n"));
   r = run_sdfreel("check t.toml", dir);
   EXPECT_EQ(r.status, 2);

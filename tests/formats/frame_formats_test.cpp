@@ -154,6 +154,31 @@ TEST(FrameFormats, ResumeAndEncodeCheckExactFilesAndRefuseLossyOnes) {
   EXPECT_FALSE(fs::exists(lossy + "/v.mkv"));
 }
 
+// An animated WebP read back with OpenImageIO: one subimage a frame, the PNG's colours (libwebp
+// makes its own Y'CbCr; a wrong matrix or range would shift them by far more than its loss).
+TEST(FrameFormats, AnimatedWebpHoldsEveryFrameInThePngsColours) {
+  const std::string dir = scratch_dir("formats-webp");
+  write_file(dir + "/t.toml", timeline(3, "\"png\""));
+  const RunResult r = run_sdfreel("render t.toml --video loop.webp", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto in = OIIO::ImageInput::open(dir + "/out/loop.webp");
+  ASSERT_TRUE(in) << OIIO::geterror();
+  int subimages = 0;
+  while (in->seek_subimage(subimages, 0)) ++subimages;
+  EXPECT_EQ(subimages, 3);
+  ASSERT_TRUE(in->seek_subimage(2, 0));
+  const OIIO::ImageSpec spec = in->spec();
+  std::vector<float> values(size_t(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(in->read_image(2, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, values.data()));
+  const ImageRGB16 png = read_png16(dir + "/out/frames/00002.png");
+  ASSERT_EQ(spec.width * spec.height, png.width * png.height);
+  double sum = 0.0;
+  for (size_t p = 0; p < png.pixels.size() / 3; ++p)
+    for (int c = 0; c < 3; ++c)
+      sum += std::fabs(values[p * spec.nchannels + c] * 255.0 - png.pixels[p * 3 + c] / 257.0);
+  EXPECT_LT(sum / double(png.pixels.size()), 4.0) << "mean error in 8-bit units";
+}
+
 TEST(FrameFormats, AnExtensionNoWriterTakesIsExitTwoAtItsPlace) {
   const std::string dir = scratch_dir("formats-bad");
   write_file(dir + "/t.toml", timeline(1, "\"png\", \"xyz\""));

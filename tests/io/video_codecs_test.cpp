@@ -78,6 +78,24 @@ TEST_F(VideoCodecsTest, PrimariesSurviveTheBt709Matrix) {
   }
 }
 
+// Stock FFmpeg 5 cannot decode an animated WebP, so its chunks are read here: the RIFF header,
+// ANIM with a loop count of 0 (forever) and one ANMF chunk a frame.
+TEST_F(VideoCodecsTest, AnimatedWebpLoopsForeverWithEveryFrame) {
+  std::vector<ImageRGB16> frames;
+  for (int i = 0; i < 5; ++i) frames.push_back(gradient_frame(64, 36, i));
+  encode_video(file("loop.webp"), "webp", frames);
+  const std::string bytes = read_bytes(file("loop.webp"));
+  ASSERT_GT(bytes.size(), 30u);
+  EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+  EXPECT_EQ(bytes.substr(8, 4), "WEBP");
+  const size_t anim = bytes.find("ANIM");
+  ASSERT_NE(anim, std::string::npos);
+  EXPECT_EQ(uint8_t(bytes[anim + 12]) | uint8_t(bytes[anim + 13]) << 8, 0) << "loop count";
+  size_t frames_found = 0;
+  for (size_t at = 0; (at = bytes.find("ANMF", at)) != std::string::npos; at += 4) ++frames_found;
+  EXPECT_EQ(frames_found, 5u);
+}
+
 TEST_F(VideoCodecsTest, AnEncoderTheMachineLacksIsNamed) {
   EXPECT_EQ(missing_video_encoder("vp9"), "");
   EXPECT_NE(missing_video_encoder("vp8").find("unknown codec 'vp8'"), std::string::npos);
