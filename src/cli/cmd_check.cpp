@@ -80,7 +80,7 @@ void print_output(const Timeline& tl, const RenderOptions& o, const std::vector<
     if (tl.audio.fade > 0)
       std::snprintf(fade, sizeof fade, ", fading out over the last %.6g s", tl.audio.fade);
     std::string codec = soundtrack_encoder_for(tl.video);
-    if (codec.empty()) codec = "nothing: a .webp holds no sound";
+    if (codec.empty()) codec = "nothing: this container holds no sound";
     std::printf("audio:      %s from %.6g s%s, as %s\n", tl.audio.path.c_str(), tl.audio.offset,
                 fade, tl.video.empty() ? "nothing yet (no video)" : codec.c_str());
   }

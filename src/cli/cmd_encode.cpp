@@ -75,9 +75,9 @@ void add_encode_command(CLI::App& app, int& status) {
   cmd->add_option("DIR", o->dir, "render output folder (with manifest.json)")->required();
   cmd->add_option("-o,--output", o->output, "video file to write")->required();
   cmd->add_option("--codec", o->codec,
-                  "h264 | h264-10bit | hevc | hevc-10bit | vp9 | av1 | ffv1 | prores | webp "
+                  "h264 | h264-10bit | hevc | hevc-10bit | vp9 | av1 | ffv1 | prores | webp | gif "
                   "(default: the container's: .mp4 h264, .mkv ffv1, .mov prores, .webm vp9, "
-                  ".webp webp; a container that also fits the render's codec asks)");
+                  ".webp webp, .gif gif; a container that also fits the render's codec asks)");
   cmd->add_option("--fps", o->fps, "frame rate, integer or N/D (default: the timeline's)");
   cmd->add_option("--crf", o->crf,
                   "quality of the lossy codecs (h264, hevc, vp9, av1, their 10-bit kinds, webp), "

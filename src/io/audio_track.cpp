@@ -69,7 +69,7 @@ std::string soundtrack_encoder_for(const std::string& video_path) {
   if (ext == ".mp4") return "aac";
   if (ext == ".mov") return "pcm_s16le";
   if (ext == ".webm" || ext == ".mkv") return "libopus";
-  return "";  // .webp: no sound
+  return "";  // .webp, .gif: no sound
 }
 
 std::shared_ptr<const EncodedAudio> encode_soundtrack(const AudioCut& cut,

@@ -29,7 +29,7 @@ struct EncodedAudio {
 };
 
 // The audio encoder a video file's container takes: AAC in MP4, PCM in MOV, Opus in WebM and
-// MKV; "" for an animated WebP, which holds no sound.
+// MKV; "" for an animated WebP or GIF, which hold no sound.
 std::string soundtrack_encoder_for(const std::string& video_path);
 
 // Decodes, cuts, fades and encodes. Throws std::runtime_error naming the file and what is wrong.

@@ -23,8 +23,11 @@ const VideoCodecSpec kCodecs[] = {
     // FFV1 keeps rgb48 losslessly as planar gbrp16le.
     {"ffv1", "ffv1", AV_PIX_FMT_GBRP16LE, false, false, 4},
     {"prores", "prores_ks", AV_PIX_FMT_YUV444P10LE, true, false, 4},
-    // libwebp converts the RGB itself (BT.601, as WebP decoders expect); it runs on one thread.
-    {"webp", "libwebp_anim", AV_PIX_FMT_BGRA, false, false, 1},
+    // WebP's lossy frames are VP8's Y'CbCr: BT.601, tv range, what its decoders assume. One
+    // thread: libwebp_anim has no others.
+    {"webp", "libwebp_anim", AV_PIX_FMT_YUV420P, true, true, 1, true},
+    // Paletted by io/palette.h, not swscale (which makes no palette of the frame's own).
+    {"gif", "gif", AV_PIX_FMT_PAL8, false, false, 1},
 };
 
 void set_private_option(AVCodecContext* ctx, const char* key, const std::string& value) {
@@ -69,7 +72,7 @@ void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int 
   // (what players assume for HD), RGB codecs store full range.
   ctx->color_primaries = AVCOL_PRI_BT709;
   ctx->color_trc = AVCOL_TRC_BT709;
-  ctx->colorspace = spec.yuv ? AVCOL_SPC_BT709 : AVCOL_SPC_RGB;
+  ctx->colorspace = !spec.yuv ? AVCOL_SPC_RGB : spec.bt601 ? AVCOL_SPC_BT470BG : AVCOL_SPC_BT709;
   ctx->color_range = spec.yuv ? AVCOL_RANGE_MPEG : AVCOL_RANGE_JPEG;
 
   const std::string encoder = spec.encoder;

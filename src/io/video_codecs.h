@@ -14,6 +14,7 @@ struct VideoCodecSpec {
   bool yuv;               // RGB -> Y'CbCr with the BT.709 matrix, limited (tv) range
   bool even_size;         // chroma halved in both directions: width and height must be even
   int threads;            // a fixed count, never "auto": see video_codecs.cpp
+  bool bt601 = false;     // Y'CbCr by the BT.601 matrix (WebP's), not BT.709
 };
 
 const VideoCodecSpec* find_video_codec(const std::string& name);  // nullptr when unknown

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/audio_track.h"
+#include "io/palette.h"
 #include "io/video_av.h"
 #include "io/video_codecs.h"
 #include "io/video_sink.h"
@@ -64,7 +65,7 @@ struct VideoEncoder::Impl {
     const AVOutputFormat* container = av_guess_format(nullptr, s.path.c_str(), nullptr);
     if (!container)
       throw std::runtime_error("video: cannot tell the container from the file name " + s.path +
-                               " (use .mp4, .mkv, .mov, .webm or .webp)");
+                               " (use .mp4, .mkv, .mov, .webm, .webp or .gif)");
     const AVCodec* codec = avcodec_find_encoder_by_name(spec.encoder);
     if (!codec)
       throw std::runtime_error(std::string("video: this libav has no encoder ") + spec.encoder);
@@ -102,6 +103,7 @@ struct VideoEncoder::Impl {
   // encoder's format. Same size: the scaler flag only picks
   // the chroma filter. BITEXACT keeps SIMD and C paths identical across machines.
   void open_converter() {
+    if (spec.pix_fmt == AV_PIX_FMT_PAL8) return;  // median_cut_palette instead
     const int w = settings.width, h = settings.height;
     converter.reset(sws_getContext(w, h, AV_PIX_FMT_RGB48, w, h, spec.pix_fmt,
                                    SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
@@ -111,10 +113,10 @@ struct VideoEncoder::Impl {
     if (spec.yuv) {
       // swscale's default matrix is BT.601 (red would come back as (255,23,0)); the tags alone
       // do not change the pixels.
-      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-      av_check(sws_setColorspaceDetails(converter.get(), bt709, /*srcRange=*/1, bt709,
+      const int* matrix = sws_getCoefficients(spec.bt601 ? SWS_CS_ITU601 : SWS_CS_ITU709);
+      av_check(sws_setColorspaceDetails(converter.get(), matrix, /*srcRange=*/1, matrix,
                                         /*dstRange=*/0, 0, 1 << 16, 1 << 16),
-               "setting the BT.709 matrix");
+               "setting the Y'CbCr matrix");
     }
   }
 
@@ -197,9 +199,18 @@ struct VideoEncoder::Impl {
                                std::to_string(settings.height));
     // The encoder may still hold the previous buffer; this gives a fresh one only if so.
     av_check(av_frame_make_writable(frame.get()), "allocating a frame");
-    const uint8_t* src[1] = {reinterpret_cast<const uint8_t*>(display.pixels.data())};
-    const int src_stride[1] = {display.width * 6};
-    sws_scale(converter.get(), src, src_stride, 0, display.height, frame->data, frame->linesize);
+    if (spec.pix_fmt == AV_PIX_FMT_PAL8) {
+      const PalettedImage paletted = median_cut_palette(display);
+      for (int y = 0; y < display.height; ++y)
+        std::memcpy(frame->data[0] + size_t(y) * size_t(frame->linesize[0]),
+                    paletted.indices.data() + size_t(y) * size_t(display.width),
+                    size_t(display.width));
+      std::memcpy(frame->data[1], paletted.palette.data(), 256 * 4);
+    } else {
+      const uint8_t* src[1] = {reinterpret_cast<const uint8_t*>(display.pixels.data())};
+      const int src_stride[1] = {display.width * 6};
+      sws_scale(converter.get(), src, src_stride, 0, display.height, frame->data, frame->linesize);
+    }
     frame->pts = next_pts++;
     encode(frame.get());
   }

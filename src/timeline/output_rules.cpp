@@ -22,6 +22,7 @@ constexpr Container kContainers[] = {
     {".mov", "prores", {"h264", "h264-10bit", "hevc", "hevc-10bit", "prores"}},
     {".webm", "vp9", {"vp9", "av1"}},
     {".webp", "webp", {"webp"}},
+    {".gif", "gif", {"gif"}},
 };
 
 std::string lower_extension(const std::string& name) {
@@ -78,7 +79,7 @@ std::string check_video_name(const std::string& name, const std::string& codec) 
            fitting + ")";
   }
   return "output.video '" + name + "': unknown container '" + ext +
-         "' (use .mp4, .mkv, .mov, .webm or .webp)";
+         "' (use .mp4, .mkv, .mov, .webm, .webp or .gif)";
 }
 
 }  // namespace sdfreel

@@ -12,7 +12,8 @@ const std::vector<VideoCodecRule>& video_codec_rules() {
       {"av1", "AV1 (libaom), 8-bit 4:2:0", "yuv420p", true, true},
       {"ffv1", "FFV1, lossless 16-bit RGB", "gbrp16le", false, false},
       {"prores", "ProRes 4444 (prores_ks), 10-bit 4:4:4", "yuv444p10le", false, false},
-      {"webp", "animated WebP (libwebp), lossy, looping", "bgra", false, true},
+      {"webp", "animated WebP (libwebp), lossy 4:2:0 BT.601, looping", "yuv420p", true, true},
+      {"gif", "GIF, 256 colours a frame (median cut), looping", "pal8", false, false},
   };
   return rules;
 }

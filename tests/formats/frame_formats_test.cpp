@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/frame_files.h"
+#include "io/video_encoder.h"
 #include "support/run.h"
 #include "support/scratch.h"
 
@@ -177,6 +178,40 @@ TEST(FrameFormats, AnimatedWebpHoldsEveryFrameInThePngsColours) {
     for (int c = 0; c < 3; ++c)
       sum += std::fabs(values[p * spec.nchannels + c] * 255.0 - png.pixels[p * 3 + c] / 257.0);
   EXPECT_LT(sum / double(png.pixels.size()), 4.0) << "mean error in 8-bit units";
+}
+
+// The primaries through the WebP encoder and OpenImageIO's reader (libwebp's decoder): the
+// BT.601 matrix in tv range gives them back; BT.709's would move green by about 20/255.
+TEST(FrameFormats, AnimatedWebpKeepsThePrimaries) {
+  const std::string dir = scratch_dir("formats-webp-primaries");
+  const uint16_t colours[3][3] = {{65535, 0, 0}, {0, 65535, 0}, {0, 0, 65535}};
+  VideoSettings s;
+  s.path = dir + "/p.webp";
+  s.codec = "webp";
+  s.width = 64;
+  s.height = 36;
+  s.fps = {10, 1};
+  {
+    VideoEncoder encoder(s);
+    for (const auto& c : colours) {
+      ImageRGB16 frame(64, 36);
+      for (size_t i = 0; i < frame.pixels.size(); ++i) frame.pixels[i] = c[i % 3];
+      encoder.add_frame(frame);
+    }
+    encoder.finish();
+  }
+  auto in = OIIO::ImageInput::open(s.path);
+  ASSERT_TRUE(in) << OIIO::geterror();
+  for (int f = 0; f < 3; ++f) {
+    ASSERT_TRUE(in->seek_subimage(f, 0));
+    const OIIO::ImageSpec spec = in->spec();
+    std::vector<float> v(size_t(spec.width) * spec.height * spec.nchannels);
+    ASSERT_TRUE(in->read_image(f, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, v.data()));
+    const float* centre = &v[(size_t(18) * spec.width + 32) * spec.nchannels];
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(centre[c] * 255.0, colours[f][c] / 257.0, 4.0)
+          << "frame " << f << " channel " << c;
+  }
 }
 
 TEST(FrameFormats, AnExtensionNoWriterTakesIsExitTwoAtItsPlace) {

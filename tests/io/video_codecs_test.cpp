@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "io/video_decode.h"
 #include "io/video_test_support.h"
 
@@ -94,6 +96,46 @@ TEST_F(VideoCodecsTest, AnimatedWebpLoopsForeverWithEveryFrame) {
   size_t frames_found = 0;
   for (size_t at = 0; (at = bytes.find("ANMF", at)) != std::string::npos; at += 4) ++frames_found;
   EXPECT_EQ(frames_found, 5u);
+}
+
+// A GIF decoded by stock ffmpeg: every frame, a solid colour exactly (in 8 bits), a frame of many
+// colours within the palette's error.
+TEST_F(VideoCodecsTest, GifHoldsEveryFrameInItsOwnPalette) {
+  if (!have_program("ffmpeg")) GTEST_SKIP() << "ffmpeg not installed";
+  // The middle frame: a smooth two-way ramp, as renders are (2304 colours on a surface).
+  ImageRGB16 ramp(64, 36);
+  for (int y = 0; y < 36; ++y)
+    for (int x = 0; x < 64; ++x) {
+      uint16_t* p = &ramp.pixels[(size_t(y) * 64 + x) * 3];
+      p[0] = uint16_t(x * 65535 / 63);
+      p[1] = uint16_t(y * 65535 / 35);
+      p[2] = 20000;
+    }
+  std::vector<ImageRGB16> frames = {solid_frame(64, 36, 65535, 0, 0), ramp,
+                                    solid_frame(64, 36, 0, 32896, 65535)};
+  encode_video(file("loop.gif"), "gif", frames);
+  int status = 0;
+  const std::string raw = run_command(
+      "ffmpeg -v error -i " + file("loop.gif") + " -f rawvideo -pix_fmt rgb24 -", &status);
+  ASSERT_EQ(status, 0);
+  const size_t frame_bytes = 64 * 36 * 3;
+  ASSERT_EQ(raw.size(), frames.size() * frame_bytes);
+  for (size_t f = 0; f < frames.size(); ++f) {
+    double sum = 0.0, worst = 0.0;
+    for (size_t i = 0; i < frame_bytes; ++i) {
+      const double want = (frames[f].pixels[i] * 255.0 + 32767) / 65535.0;
+      const double e = std::fabs(uint8_t(raw[f * frame_bytes + i]) - std::floor(want));
+      sum += e;
+      worst = std::max(worst, e);
+    }
+    if (f != 1) {
+      EXPECT_EQ(worst, 0.0) << "solid frame " << f;
+    } else {
+      // 2304 colours in 256 boxes of about 3x3 of the ramp's steps (4/255 and 7/255): about
+      // 2.8/255 on average in red and green, none in blue.
+      EXPECT_LT(sum / frame_bytes, 3.0) << "mean error of the ramp, 8-bit units";
+    }
+  }
 }
 
 TEST_F(VideoCodecsTest, AnEncoderTheMachineLacksIsNamed) {

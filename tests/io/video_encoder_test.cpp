@@ -19,10 +19,11 @@ namespace {
 
 using VideoEncoderTest = VideoTest;
 
-const char* const kCodecFiles[][2] = {
-    {"h264", "v.mp4"},         {"ffv1", "v.mkv"},    {"prores", "v.mov"},
-    {"h264-10bit", "h10.mp4"}, {"hevc", "hevc.mp4"}, {"hevc-10bit", "hevc10.mkv"},
-    {"vp9", "vp9.webm"},       {"av1", "av1.webm"},  {"webp", "loop.webp"}};
+const char* const kCodecFiles[][2] = {{"h264", "v.mp4"},     {"ffv1", "v.mkv"},
+                                      {"prores", "v.mov"},   {"h264-10bit", "h10.mp4"},
+                                      {"hevc", "hevc.mp4"},  {"hevc-10bit", "hevc10.mkv"},
+                                      {"vp9", "vp9.webm"},   {"av1", "av1.webm"},
+                                      {"webp", "loop.webp"}, {"gif", "loop.gif"}};
 
 std::vector<ImageRGB16> some_frames() {
   std::vector<ImageRGB16> frames;

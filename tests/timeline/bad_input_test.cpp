@@ -160,8 +160,8 @@ TEST_F(BadInput, ParameterComponentCount) {
 TEST_F(BadInput, UnknownCodec) {
   expect_error(
       video_with("[output]\ncodec = \"x264\""),
-      "unknown codec 'x264': use h264, h264-10bit, hevc, hevc-10bit, vp9, av1, ffv1, prores or "
-      "webp; did you mean 'h264'?",
+      "unknown codec 'x264': use h264, h264-10bit, hevc, hevc-10bit, vp9, av1, ffv1, prores, webp "
+      "or gif; did you mean 'h264'?",
       4, 9);
 }
 
