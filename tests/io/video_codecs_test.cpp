@@ -115,8 +115,9 @@ TEST_F(VideoCodecsTest, GifHoldsEveryFrameInItsOwnPalette) {
                                     solid_frame(64, 36, 0, 32896, 65535)};
   encode_video(file("loop.gif"), "gif", frames);
   int status = 0;
-  const std::string raw = run_command(
-      "ffmpeg -v error -i " + file("loop.gif") + " -f rawvideo -pix_fmt rgb24 -", &status);
+  const std::string raw = run_command("ffmpeg -v error -i " + file("loop.gif") +
+                                          " -fps_mode passthrough -f rawvideo -pix_fmt rgb24 -",
+                                      &status);
   ASSERT_EQ(status, 0);
   const size_t frame_bytes = 64 * 36 * 3;
   ASSERT_EQ(raw.size(), frames.size() * frame_bytes);
