@@ -1,15 +1,15 @@
 // `sdfreel still TIMELINE --time SECONDS -o FILE`: one frame at any video time.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "cli/commands_impl.h"
+#include "cli/output_checks.h"
 #include "io/frame_files.h"
 #include "io/frame_formats.h"
-#include "io/image_plugin.h"
 #include "io/sample_count_images.h"
+#include "timeline/rules.h"
 
 namespace sdfreel {
 
@@ -27,24 +27,16 @@ struct StillOptions {
 // The extension of -o's file (lower case, no dot), which names its format: exr and png as
 // always, any other OpenImageIO writes, found before the frame is rendered.
 std::string still_extension(const std::string& output) {
-  std::string ext = std::filesystem::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  std::string ext = lower_extension(output);
   if (ext.size() < 2)
     throw UsageError("-o " + output +
                      ": name the file with the extension of its format (.exr, .png, .tif, .dpx, "
                      ".jpg, ...)");
   ext.erase(0, 1);
   if (ext == "exr" || ext == "png") return ext;
-  bool writes = false;
-  try {
-    writes = image_module_writes(ext);
-  } catch (const std::exception& e) {
-    throw UsageError("-o " + output + ": ." + ext + " files need OpenImageIO: " + e.what());
-  }
-  if (!writes)
-    throw UsageError("-o " + output + ": OpenImageIO on this machine writes no ." + ext +
-                     " files; use .exr, .png, .tif, .dpx, .jpg or another format it writes");
+  if (std::string problem = unwritable_frame_format(ext); !problem.empty())
+    throw UsageError("-o " + output + ": " + problem +
+                     "; use .exr, .png, .tif, .dpx, .jpg or another format it writes");
   return ext;
 }
 

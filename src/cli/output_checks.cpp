@@ -7,21 +7,22 @@
 
 namespace sdfreel {
 
-void validate_frame_formats(const Timeline& tl) {
-  for (const Timeline::OtherFrames& f : tl.other_frames) {
-    bool writes = false;
-    try {
-      writes = image_module_writes(f.ext);
-    } catch (const std::exception& e) {
-      throw InputError(tl.path, f.line, f.column,
-                       "output.frames: \"" + f.ext + "\" needs OpenImageIO: " + e.what());
-    }
-    if (!writes)
-      throw InputError(tl.path, f.line, f.column,
-                       "output.frames: OpenImageIO on this machine writes no ." + f.ext +
-                           " files; use exr, png, tiff, tif, dpx, jpg or the extension of "
-                           "another format it writes");
+std::string unwritable_frame_format(const std::string& ext) {
+  try {
+    if (image_module_writes(ext)) return "";
+  } catch (const std::exception& e) {
+    return "." + ext + " files need OpenImageIO: " + e.what();
   }
+  return "OpenImageIO on this machine writes no ." + ext + " files";
+}
+
+void validate_frame_formats(const Timeline& tl) {
+  for (const Timeline::OtherFrames& f : tl.other_frames)
+    if (std::string problem = unwritable_frame_format(f.ext); !problem.empty())
+      throw InputError(tl.path, f.line, f.column,
+                       "output.frames: " + problem +
+                           "; use exr, png, tiff, tif, dpx, jpg or the extension of another "
+                           "format it writes");
 }
 
 void validate_video_encoder(const Timeline& tl, bool makes_video) {

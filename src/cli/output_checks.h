@@ -6,6 +6,9 @@
 
 namespace sdfreel {
 
+// Why frame files of this extension (no dot; not exr or png) cannot be written here: the image
+// module is missing, or OpenImageIO has no writer for it; "" when they can. Loads the module.
+std::string unwritable_frame_format(const std::string& ext);
 // Throws InputError at the name's place in the timeline for an extension no writer takes. Loads
 // the image module only when the timeline names such a format.
 void validate_frame_formats(const Timeline& tl);

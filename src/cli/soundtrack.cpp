@@ -24,7 +24,8 @@ std::string file_sha256(const std::string& path) {
 void check_soundtrack(const Timeline& tl) {
   if (tl.audio.path.empty()) return;
   try {
-    file_sha256(tl.audio.path);  // a regular file, not too large
+    // A FIFO would block the decoder's open; the bytes are read once, for the manifest's hash.
+    check_regular_file(tl.audio.path, kMaxAudioBytes);
     AudioSource source(tl.audio.path, 0.0);
     std::vector<float> samples;
     if (source.read(samples, 1024) == 0)

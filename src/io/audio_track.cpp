@@ -1,23 +1,15 @@
 #include "io/audio_track.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
 
 #include "io/audio_source.h"
+#include "timeline/rules.h"
 
 namespace sdfreel {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  const size_t dot = path.rfind('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // Stereo floats (interleaved) into the encoder's sample format.
 void fill_frame(AVFrame* frame, const float* samples, int count) {

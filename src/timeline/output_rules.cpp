@@ -2,6 +2,7 @@
 // its folder, lock and manifest for a video it cannot write.
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 #include "timeline/rules.h"
 
@@ -25,7 +26,10 @@ constexpr Container kContainers[] = {
     {".gif", "gif", {"gif"}},
 };
 
-std::string lower_extension(const std::string& name) {
+}  // namespace
+
+std::string lower_extension(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
   const size_t dot = name.rfind('.');
   if (dot == std::string::npos || dot == 0) return "";
   std::string ext = name.substr(dot);
@@ -33,8 +37,6 @@ std::string lower_extension(const std::string& name) {
                  [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
-
-}  // namespace
 
 std::string check_path_text(const std::string& key, const std::string& text) {
   for (unsigned char c : text)

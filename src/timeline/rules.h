@@ -18,6 +18,9 @@ std::string check_video_name(const std::string& name, const std::string& codec);
 // The codec a video file's container stands for when none is named: .mp4 h264, .mkv ffv1, .mov
 // prores (sdfreel's pairings); "" for any other extension.
 std::string usual_codec(const std::string& name);
+// The extension of a path's file name in lower case, with its dot (".mp4"); "" for none or a
+// hidden file's name (".mp4" alone).
+std::string lower_extension(const std::string& path);
 // Whether that container can hold `codec` (check_video_name's table).
 bool container_holds(const std::string& name, const std::string& codec);
 // A path or name from the timeline: no NUL or other control characters (the file system would cut

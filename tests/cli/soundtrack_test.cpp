@@ -66,6 +66,13 @@ TEST(Soundtrack, AMissingOrUndecodableFileIsExitTwoBeforeAnything) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("text.wav"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out"));
+  // A FIFO would block the decoder's open for ever: refused at once, unread.
+  ASSERT_EQ(run("mkfifo pipe.wav", dir).status, 0);
+  write_file(dir + "/t.toml", with_audio("audio = \"pipe.wav\"\n"));
+  r = run_sdfreel("render t.toml --no-video", dir, "timeout 60 ");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
   write_tone_wav(dir + "/tone.wav", 1.0, 48000, 0.0);
   write_file(dir + "/t.toml", with_audio("audio = \"tone.wav\"\n"));
   r = run_sdfreel("render t.toml --video loop.webp", dir);

@@ -1,14 +1,18 @@
 // The lossy codecs beyond H.264 (HEVC, VP9, AV1) and the 10-bit ones: each in its container,
 // read back with ffprobe (stream, pixel format, colour tags, frame count) and decoded with libav
 // (the primaries come back through the BT.709 matrix).
-#include "io/video_codecs.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+extern "C" {
+#include <libavutil/pixdesc.h>
+}
+
+#include "io/video_codecs.h"
 #include "io/video_decode.h"
 #include "io/video_test_support.h"
+#include "timeline/video_codec_rules.h"
 
 namespace sdfreel::test {
 namespace {
@@ -137,6 +141,19 @@ TEST_F(VideoCodecsTest, GifHoldsEveryFrameInItsOwnPalette) {
       EXPECT_LT(sum / frame_bytes, 3.0) << "mean error of the ramp, 8-bit units";
     }
   }
+}
+
+// The timeline's codec table (names, pixel formats for messages) and libav's must not drift.
+TEST_F(VideoCodecsTest, TheTimelinesTableAndTheEncodersAgree) {
+  std::string names;
+  for (const VideoCodecRule& rule : video_codec_rules()) {
+    names += (names.empty() ? "" : ", ") + std::string(rule.name);
+    const VideoCodecSpec* spec = find_video_codec(rule.name);
+    ASSERT_NE(spec, nullptr) << rule.name;
+    EXPECT_STREQ(av_get_pix_fmt_name(spec->pix_fmt), rule.pix_fmt) << rule.name;
+    EXPECT_EQ(spec->even_size, rule.even_size) << rule.name;
+  }
+  EXPECT_EQ(known_video_codecs(), names);
 }
 
 TEST_F(VideoCodecsTest, AnEncoderTheMachineLacksIsNamed) {
