@@ -34,7 +34,7 @@ void publish_frame(const std::string& dir, const Timeline& tl, const ManifestHea
     const std::map<std::string, std::string> metadata = frame_metadata(tl, f);
     for (const std::string& ext : header.frame_files)
       write_frame_file(frame_path(dir, i, ext), frame_format(ext, tl.frame_options), f.linear,
-                       f.display, metadata);
+                       f.display, metadata, f.passes);
     const double pixels = double(tl.width) * tl.height;
     record_frame(dir, header,
                  ManifestFrame{i, f.ctx.video_time, f.ctx.scene_time, f.linear_hash, f.display_md5,
@@ -119,9 +119,8 @@ int run_render(const RenderOptions& o) {
 
   std::unique_ptr<VideoEncoder> encoder;
   if (want_video)
-    encoder = std::make_unique<VideoEncoder>(
-        VideoSettings{dir + "/" + tl.video, tl.codec, tl.width, tl.height, tl.fps, tl.crf,
-                      soundtrack});
+    encoder = std::make_unique<VideoEncoder>(VideoSettings{dir + "/" + tl.video, tl.codec, tl.width,
+                                                           tl.height, tl.fps, tl.crf, soundtrack});
 
   if (frames.empty())  // a shard of more parts than frames
     std::fprintf(stderr, "note: --shard %s of %d frames selects none: nothing to render\n",

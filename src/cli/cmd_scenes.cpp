@@ -4,6 +4,7 @@
 
 #include "cli/commands_impl.h"
 #include "scenes/registry.h"
+#include "scenes/scene_passes.h"
 #include "timeline/suggest.h"
 
 namespace sdfreel {
@@ -36,9 +37,12 @@ int run_scenes(const std::string& name) {
   }
   std::printf("%s\n  %s\n\n", s->name.c_str(), s->description.c_str());
   const CameraPose& c = s->default_camera;
-  std::printf("default camera: position = [%g, %g, %g], target = [%g, %g, %g], fov = %g\n\n",
+  std::printf("default camera: position = [%g, %g, %g], target = [%g, %g, %g], fov = %g\n",
               c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z,
               c.fov_deg);
+  std::string passes;
+  for (const std::string& p : scene_passes(*s)) passes += (passes.empty() ? "" : ", ") + p;
+  std::printf("compositing passes ([output] passes): %s\n\n", passes.c_str());
   std::printf("%-24s %-20s %-18s %s\n", "parameter", "default", "range", "meaning");
   for (const ParamSpec& p : s->params) {
     char range[64];

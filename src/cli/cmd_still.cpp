@@ -61,7 +61,7 @@ int run_still(const StillOptions& o) {
   const int frame = int(std::llround(o.time * tl.fps.value()));
   RenderedFrame f = pipe.render_context(frame_context_at(tl, pipe.scene(), frame, o.time));
   write_frame_file(o.output, frame_format(ext, tl.frame_options), f.linear, f.display,
-                   frame_metadata(tl, f));
+                   frame_metadata(tl, f), f.passes);
   if (!o.sample_counts.empty()) {
     const SampleCounts& counts = pipe.backend().sample_counts();
     if (counts_ext == ".exr")

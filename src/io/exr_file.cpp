@@ -65,7 +65,7 @@ bool exr_compression_is_lossless(const std::string& compression) {
 
 std::vector<char> encode_exr(const ImageRGBA& linear,
                              const std::map<std::string, std::string>& metadata,
-                             const ExrSettings& settings) {
+                             const ExrSettings& settings, const std::vector<PassImage>& passes) {
   Imf::Header header(linear.width, linear.height);
   // PIZ by default: lossless; faster and smaller than zip on our frames.
   header.compression() = named_compression(settings.compression).compression;
@@ -85,6 +85,15 @@ std::vector<char> encode_exr(const ImageRGBA& linear,
     header.channels().insert(kChannels[c], Imf::Channel(type));
     buffer.insert(kChannels[c], Imf::Slice(type, base + c * sample, 4 * sample,
                                            4 * sample * size_t(linear.width)));
+  }
+  for (const PassImage& p : passes) {
+    const size_t n = p.channels.size();
+    char* values = reinterpret_cast<char*>(const_cast<float*>(p.values.data()));
+    for (size_t c = 0; c < n; ++c) {
+      header.channels().insert(p.channels[c], Imf::Channel(Imf::FLOAT));
+      buffer.insert(p.channels[c], Imf::Slice(Imf::FLOAT, values + c * sizeof(float),
+                                              n * sizeof(float), n * sizeof(float) * p.width));
+    }
   }
   MemoryStream stream;
   {
@@ -119,6 +128,27 @@ ImageRGBA read_exr_file(const std::string& path) {
     file.setFrameBuffer(buffer);
     file.readPixels(dw.min.y, dw.max.y);
     return img;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot read " + path + ": " + e.what());
+  }
+}
+
+std::vector<float> read_exr_channel(const std::string& path, const std::string& channel) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i dw = file.header().dataWindow();
+    const int width = dw.max.x - dw.min.x + 1, height = dw.max.y - dw.min.y + 1;
+    if (!file.header().channels().findChannel(channel))
+      throw std::runtime_error("no channel '" + channel + "'");
+    std::vector<float> values(size_t(width) * height);
+    const std::ptrdiff_t origin =
+        (std::ptrdiff_t(dw.min.y) * width + dw.min.x) * std::ptrdiff_t(sizeof(float));
+    Imf::FrameBuffer buffer;
+    buffer.insert(channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()) - origin,
+                                      sizeof(float), sizeof(float) * size_t(width)));
+    file.setFrameBuffer(buffer);
+    file.readPixels(dw.min.y, dw.max.y);
+    return values;
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot read " + path + ": " + e.what());
   }

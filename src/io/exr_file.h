@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "render/compositing_passes.h"
 #include "render/image.h"
 
 namespace sdfreel {
@@ -20,13 +21,19 @@ bool exr_compression_is_lossless(const std::string& compression);
 
 // Encodes `linear` as an RGBA EXR in memory, with each metadata entry stored as the string
 // attribute "sdfreel:<key>" and the chromaticities of its primaries (Rec.709, D65 white: the
-// scene-linear space the scenes render in). Half channels round the floats to nearest even.
+// scene-linear space the scenes render in). Half channels round the floats to nearest even. Each
+// compositing pass adds its channels as 32-bit floats (depth, counts: exact beyond half's range).
 std::vector<char> encode_exr(const ImageRGBA& linear,
                              const std::map<std::string, std::string>& metadata,
-                             const ExrSettings& settings = {});
+                             const ExrSettings& settings = {},
+                             const std::vector<PassImage>& passes = {});
 
 // Reads R, G, B (and A, else 1) of an EXR as floats. Throws std::runtime_error naming `path`.
 ImageRGBA read_exr_file(const std::string& path);
+
+// One float channel of an EXR by name (a pass: "samples", "Z", "N.X"...), a value a pixel, rows
+// top-down. Throws std::runtime_error naming `path` when it has no such channel.
+std::vector<float> read_exr_channel(const std::string& path, const std::string& channel);
 
 // The string attributes of an EXR's header (name -> value), for tests and tools.
 std::map<std::string, std::string> read_exr_strings(const std::string& path);

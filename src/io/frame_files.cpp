@@ -27,11 +27,14 @@ constexpr PngCompression kFramePng{1, 0x80, 2};  // level 1, PNG_FILTER_PAETH, Z
 
 void write_exr_atomic(const std::string& path, const ImageRGBA& linear,
                       const std::map<std::string, std::string>& metadata,
-                      const ExrSettings& settings) {
+                      const ExrSettings& settings, const std::vector<PassImage>& passes) {
   check_size(path, linear.width, linear.height, linear.pixels.size(), 4);
+  for (const PassImage& p : passes)
+    check_size(path, p.width == linear.width ? p.width : 0,
+               p.height == linear.height ? p.height : 0, p.values.size(), int(p.channels.size()));
   std::vector<char> bytes;
   try {
-    bytes = encode_exr(linear, metadata, settings);
+    bytes = encode_exr(linear, metadata, settings, passes);
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write " + path + ": " + e.what());
   }

@@ -3,6 +3,7 @@
 // rename): a killed render never leaves a truncated frame.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "io/exr_file.h"
 #include "render/image.h"
@@ -10,10 +11,10 @@
 namespace sdfreel {
 
 // EXR: RGBA, scene-linear, half floats and PIZ unless `settings` says otherwise, with string
-// metadata attributes (key -> value, stored as "sdfreel:<key>").
+// metadata attributes (key -> value, stored as "sdfreel:<key>") and compositing passes.
 void write_exr_atomic(const std::string& path, const ImageRGBA& linear,
                       const std::map<std::string, std::string>& metadata,
-                      const ExrSettings& settings = {});
+                      const ExrSettings& settings = {}, const std::vector<PassImage>& passes = {});
 // PNG: 16-bit RGB display values.
 void write_png16_atomic(const std::string& path, const ImageRGB16& display);
 

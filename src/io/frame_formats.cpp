@@ -77,6 +77,11 @@ std::map<std::string, std::string> frame_option_values(const std::vector<std::st
       values["exr_compression"] = options.exr_compression;
       values["exr_bits"] = std::to_string(options.exr_bits);
     }
+    if (ext == "exr" && !options.passes.empty()) {
+      std::string names;
+      for (const std::string& p : options.passes) names += (names.empty() ? "" : ",") + p;
+      values["passes"] = names;
+    }
   }
   return values;
 }
@@ -92,15 +97,23 @@ FrameFileOptions frame_options_from_values(const std::map<std::string, std::stri
   number("exr_bits", options.exr_bits);
   if (auto it = values.find("exr_compression"); it != values.end())
     options.exr_compression = it->second;
+  if (auto it = values.find("passes"); it != values.end()) {
+    std::string rest = it->second;
+    for (size_t comma; !rest.empty();
+         rest = comma == std::string::npos ? "" : rest.substr(comma + 1)) {
+      comma = rest.find(',');
+      options.passes.push_back(rest.substr(0, comma));
+    }
+  }
   return options;
 }
 
 void write_frame_file(const std::string& path, const FrameFormat& format, const ImageRGBA& linear,
-                      const ImageRGB16& display,
-                      const std::map<std::string, std::string>& metadata) {
+                      const ImageRGB16& display, const std::map<std::string, std::string>& metadata,
+                      const std::vector<PassImage>& passes) {
   if (!format.through_oiio) {
     if (format.linear)
-      write_exr_atomic(path, linear, metadata, format.exr);
+      write_exr_atomic(path, linear, metadata, format.exr, passes);
     else
       write_png16_atomic(path, display);
     return;

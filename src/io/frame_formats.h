@@ -1,7 +1,7 @@
 #pragma once
-// Frame files by extension (docs/outputs.md): what each holds, scene-linear floats or display
-// values and in how many bits, and so whether reading it back gives the hashed pixels exactly.
-// EXR and PNG are written by OpenEXR and libpng (frame_files.h); every other extension by
+// Frame files by extension (docs/timeline.md#frame-formats): what each holds, scene-linear floats
+// or display values and in how many bits, and so whether reading it back gives the hashed pixels
+// exactly. EXR and PNG are written by OpenEXR and libpng (frame_files.h); every other extension by
 // OpenImageIO through the image module (image_plugin.h), loaded only when one is used.
 #include <map>
 #include <optional>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/exr_file.h"
+#include "render/compositing_passes.h"
 #include "render/image.h"
 #include "timeline/frame_file_options.h"
 
@@ -36,17 +37,19 @@ std::vector<std::string> timeline_frame_files(const Timeline& tl);
 
 // The options that shape the files of these extensions, by their [output] key ("tiff_bits":
 // "16"), for the manifest: every option of a format beyond EXR and PNG, EXR's when not the
-// default (PIZ, half); empty for the default EXR and PNG.
+// default (PIZ, half), and its compositing passes ("passes": "samples,sdf_evals"); empty for the
+// default EXR and PNG.
 std::map<std::string, std::string> frame_option_values(const std::vector<std::string>& exts,
                                                        const FrameFileOptions& options);
 // Reads them back (keys it does not know are ignored; missing ones keep their defaults).
 FrameFileOptions frame_options_from_values(const std::map<std::string, std::string>& values);
 
 // Writes one frame file atomically (temporary beside it, then rename), from the linear or the
-// display pixels as its format takes. Throws std::runtime_error naming `path`.
+// display pixels as its format takes; an EXR carries `passes` as channels of their own. Throws
+// std::runtime_error naming `path`.
 void write_frame_file(const std::string& path, const FrameFormat& format, const ImageRGBA& linear,
-                      const ImageRGB16& display,
-                      const std::map<std::string, std::string>& metadata);
+                      const ImageRGB16& display, const std::map<std::string, std::string>& metadata,
+                      const std::vector<PassImage>& passes = {});
 
 // What an exact format's file gives back: the linear pixels (EXR, 32-bit TIFF) or the display
 // ones. Throws std::runtime_error for an unreadable file or one of other contents.

@@ -8,6 +8,7 @@
 #include "io/hashing.h"
 #include "pipeline/errors.h"
 #include "pipeline/frame_memory.h"
+#include "pipeline/pass_images.h"
 #include "scenes/registry.h"
 #include "shader/shader_project.h"
 
@@ -49,6 +50,7 @@ FramePipeline::FramePipeline(const Timeline& tl, std::unique_ptr<Backend> backen
   check_frame_memory(tl);  // before the backend allocates anything of the frame's size
   // Before begin: a shader with feedback replays earlier frames while it starts.
   backend_->set_frame_source([this](int i) { return frame_context(tl_, *scene_, i); });
+  record_passes(tl.frame_options.passes, *backend_);
   backend_->begin(*scene_);
 }
 
@@ -62,6 +64,7 @@ RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
   f.ctx = ctx;
   const auto start = std::chrono::steady_clock::now();
   f.linear = backend_->render(ctx, f.stats);
+  f.passes = pass_images(tl_.frame_options.passes, *backend_, ctx.width, ctx.height);
   // Shadertoy code often divides by zero: shown black, as on the site, unless asked otherwise.
   if (scene_->shader_project && scene_->shader_project->non_finite_black) {
     std::string first;

@@ -6,6 +6,7 @@
 
 #include "io/color.h"
 #include "render/backend.h"
+#include "render/compositing_passes.h"
 #include "scenes/scene.h"
 #include "timeline/timeline.h"
 
@@ -17,6 +18,7 @@ struct RenderedFrame {
   ImageRGBA linear;  // half-rounded
   ImageRGB16 display;
   std::string linear_hash, display_md5;
+  std::vector<PassImage> passes;  // [output] passes, for the EXR frame; never hashed
   RayStats stats;
   double seconds = 0.0;
 };

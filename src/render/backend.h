@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/buffer_checkpoints.h"
 #include "render/frame_context.h"
@@ -28,6 +29,14 @@ class Backend {
   virtual ImageRGBA render(const FrameContext& ctx, RayStats& stats) = 0;
   // Samples each pixel of the last rendered frame took (all the same unless adaptive).
   virtual const SampleCounts& sample_counts() const = 0;
+  // For the sdf_evals compositing pass (render/compositing_passes.h), asked for before begin():
+  // the SDF evaluations each pixel of the last frame took, all its samples together (row-major,
+  // top row first). Empty from a backend that does not count them (a user's shader).
+  virtual void record_sdf_evals(bool on) { (void)on; }
+  virtual const std::vector<float>& sdf_eval_counts() const {
+    static const std::vector<float> none;
+    return none;
+  }
   // The context of any frame of the render: a user's shader with feedback replays its buffers
   // through it (docs/shaders.md). Backends without such state ignore it.
   virtual void set_frame_source(std::function<FrameContext(int)> source) { (void)source; }

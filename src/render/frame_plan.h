@@ -51,10 +51,12 @@ enum class CullMode { None, Back, Front };             // front: counter-clockwi
 
 // What a ray pass's CPU code returns for up to eight rays. keep[i] false discards lane i (nothing
 // written, as GLSL's discard); depth is window depth, read only when the pass has a depth target.
+// The runner fills evals (the SDF evaluations each lane counted: RayStats::lane_evals).
 struct RayPassOutput {
   glm::vec3 colour[LANES];
   float depth[LANES];
   bool keep[LANES];
+  int32_t evals[LANES];
 };
 
 // A per-pixel function of a primary ray: what scenes were before plans. CPU: `packet` on packets

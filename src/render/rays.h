@@ -13,11 +13,36 @@ struct RayStats {
   uint64_t sdf_evals = 0;
   uint64_t steps = 0;
   uint64_t capped = 0;  // rays that hit max_steps
+  // SDF evaluations of each lane of the packet being traced, for the sdf_evals compositing pass:
+  // the runner zeroes them before a packet and reads them after (never summed by add()). Lane
+  // code counts through count_evals(); scalar code adds to sdf_evals only, and the runners of
+  // scalar rays attribute the difference to the ray's lane.
+  M8 lane_evals = splat_mask(false);
+  // `per_lane` evaluations for each lane in `active`.
+  void count_evals(M8 active, int32_t per_lane = 1) {
+    sdf_evals += count_lanes(active) * uint64_t(per_lane);
+    lane_evals -= active * per_lane;  // active lanes are -1
+  }
   void add(const RayStats& o) {
     sdf_evals += o.sdf_evals;
     steps += o.steps;
     capped += o.capped;
   }
+};
+
+// While it lives, what scalar code counts goes to lane `lane` too: packet code that shades some of
+// its lanes one at a time.
+class LaneEvalScope {
+ public:
+  LaneEvalScope(RayStats& stats, int lane) : stats_(stats), lane_(lane), before_(stats.sdf_evals) {}
+  ~LaneEvalScope() { stats_.lane_evals[lane_] += int32_t(stats_.sdf_evals - before_); }
+  LaneEvalScope(const LaneEvalScope&) = delete;
+  LaneEvalScope& operator=(const LaneEvalScope&) = delete;
+
+ private:
+  RayStats& stats_;
+  int lane_;
+  uint64_t before_;
 };
 
 struct Ray {

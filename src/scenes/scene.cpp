@@ -19,7 +19,10 @@ FramePlan Scene::frame_plan(const FrameContext&) const {
 }
 
 void Scene::radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const {
-  for (int i = 0; i < rays.count; ++i) out[i] = radiance(rays.ray(i), stats);
+  for (int i = 0; i < rays.count; ++i) {
+    const LaneEvalScope lane(stats, i);
+    out[i] = radiance(rays.ray(i), stats);
+  }
 }
 
 std::vector<CameraPose> test_camera_poses(const SceneInfo& info) {

@@ -80,6 +80,9 @@ struct SceneInfo {
   glm::dvec3 map_up{0.0, 1.0, 0.0};
   double map_ceiling = 1e9;
   bool map_side_view = true;
+  // Its marches count their SDF evaluations per ray on both backends (RayStats, the GLSL
+  // sdf_evals output): the bench's evaluations a pixel and the sdf_evals compositing pass.
+  bool counts_sdf_evals = false;
 };
 
 // The poses the scene-wide tests render: the default camera, the same eye looking down steeply

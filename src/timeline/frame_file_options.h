@@ -12,6 +12,7 @@ struct FrameFileOptions {
   int jpeg_quality = 95;                // 1-100
   std::string exr_compression = "piz";  // one of exr_compression_names()
   int exr_bits = 16;                    // 16 (half) or 32 (float)
+  std::vector<std::string> passes;      // compositing passes the EXR frames carry, in given order
 };
 
 // OpenEXR's compressions by the names [output] exr_compression takes (io/exr_file.cpp maps them):

@@ -148,7 +148,7 @@ Timeline parse_timeline(const std::vector<SceneInfo>& scenes, const std::string&
   r.check_keys(root, "",
                {"video", "output", "color", "time", "camera", "params", "shader", "channels"});
   const SceneInfo& scene = parse_video(r, root, scenes, shaders, tl);
-  parse_output(r, root, tl);
+  parse_output(r, root, scene, tl);
   parse_color(r, root, tl);
   parse_time(r, root, tl);
   parse_camera(r, root, scene, tl);

@@ -168,13 +168,14 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
   return *scene;
 }
 
-void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
+void parse_output(const TomlReader& r, const toml::table& root, const SceneInfo& scene,
+                  Timeline& tl) {
   tl.out_dir = "output/" + timeline_stem(tl.path);
   const toml::table* output = section(r, root, "output");
   if (!output) return;
   r.check_keys(*output, "[output]",
                {"dir", "frames", "video", "codec", "crf", "tiff_bits", "dpx_bits", "jpeg_quality",
-                "exr_compression", "exr_bits", "audio", "audio_offset", "audio_fade"});
+                "exr_compression", "exr_bits", "passes", "audio", "audio_offset", "audio_fade"});
 
   if (const toml::node* n = output->get("dir")) {
     tl.out_dir = r.string(*n, "output.dir");
@@ -183,6 +184,7 @@ void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl) {
       r.fail(*n, problem);
   }
   parse_frame_files(r, *output, tl);
+  parse_passes(r, *output, scene, tl);
   parse_soundtrack(r, *output, tl);
   if (const toml::node* n = output->get("video")) tl.video = r.string(*n, "output.video");
   if (const toml::node* n = output->get("codec")) {

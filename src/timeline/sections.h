@@ -17,11 +17,15 @@ const SceneInfo& parse_video(const TomlReader& r, const toml::table& root,
                              Timeline& tl);
 // [video] adaptive (after quality, whose preset gives the defaults).
 void parse_adaptive(const TomlReader& r, const toml::table& video, Timeline& tl);
-void parse_output(const TomlReader& r, const toml::table& root, Timeline& tl);
+void parse_output(const TomlReader& r, const toml::table& root, const SceneInfo& scene,
+                  Timeline& tl);
 // [output] frames and the options of the formats OpenImageIO writes (parse_output_files.cpp).
 void parse_frame_files(const TomlReader& r, const toml::table& output, Timeline& tl);
 // [output] audio, audio_offset, audio_fade (parse_output_files.cpp).
 void parse_soundtrack(const TomlReader& r, const toml::table& output, Timeline& tl);
+// [output] passes, after frames (parse_passes.cpp).
+void parse_passes(const TomlReader& r, const toml::table& output, const SceneInfo& scene,
+                  Timeline& tl);
 void parse_color(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_time(const TomlReader& r, const toml::table& root, Timeline& tl);
 void parse_camera(const TomlReader& r, const toml::table& root, const SceneInfo& scene,

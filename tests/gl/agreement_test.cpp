@@ -1,11 +1,12 @@
 // Every registered scene in process on both backends: the GLSL twin computes the same linear floats
-// as the C++ scene, bit for bit, and the same SDF evaluation count, for every march preset and mode
-// (draft, final, reference, naive, hit mask), with every parameter at its minimum and at its
-// maximum, from the scene's test poses (test_camera_poses: the default camera, two views of it any
-// scene gets, SceneInfo::test_poses). A mismatch names the first pixels. Scenes whose plan has a
-// mesh pass (museum) are judged by Filament's rule instead (gl/filament_rule.h): rasterisers
-// need not agree to the bit; so is every scene on a Mesa whose llvmpipe is not bit-exact
-// (gl/mesa_bits.h), where the count of differing pixels is printed.
+// as the C++ scene, bit for bit, and the same SDF evaluation count, pixel by pixel (the sdf_evals
+// compositing pass), for every march preset and mode (draft, final, reference, naive, hit mask),
+// with every parameter at its minimum and at its maximum, from the scene's test poses
+// (test_camera_poses: the default camera, two views of it any scene gets, SceneInfo::test_poses). A
+// mismatch names the first pixels. Scenes whose plan has a mesh pass (museum) are judged by
+// Filament's rule instead (gl/filament_rule.h): rasterisers need not agree to the bit; so is every
+// scene on a Mesa whose llvmpipe is not bit-exact (gl/mesa_bits.h), where the count of differing
+// pixels is printed.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -93,6 +94,8 @@ class Agreement : public ::testing::TestWithParam<Case> {
     } catch (const std::exception& e) {
       GTEST_SKIP() << "OSMesa unavailable: " << e.what();
     }
+    osmesa->record_sdf_evals(true);  // the sdf_evals compositing pass, compared pixel by pixel
+    cpu.record_sdf_evals(true);
     osmesa->begin(*info);
     cpu.begin(*info);
     bit_exact = test::llvmpipe_bit_exact(*osmesa);
@@ -131,6 +134,7 @@ class Agreement : public ::testing::TestWithParam<Case> {
                         << b.at(x, y)[0] << ", " << b.at(x, y)[1] << ", " << b.at(x, y)[2] << ")";
     EXPECT_EQ(differing, 0) << what << ": pixels that differ";
     EXPECT_EQ(cpu_stats.sdf_evals, gl_stats.sdf_evals) << what;
+    EXPECT_EQ(cpu.sdf_eval_counts(), osmesa->sdf_eval_counts()) << what << ": evaluations a pixel";
     EXPECT_EQ(cpu.sample_counts(), osmesa->sample_counts()) << what;
     return cpu_stats.sdf_evals;
   }

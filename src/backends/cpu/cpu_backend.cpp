@@ -31,7 +31,7 @@ void CpuBackend::begin(const SceneInfo& scene) {
 ImageRGBA CpuBackend::render(const FrameContext& ctx, RayStats& stats) {
   scene_->prepare(ctx);
   return run_plan_cpu(scene_->frame_plan(ctx), ctx, CpuRunSettings{threads_, tile_size_, packets_},
-                      stats, &counts_);
+                      stats, &counts_, record_evals_ ? &evals_ : nullptr);
 }
 
 }  // namespace sdfreel

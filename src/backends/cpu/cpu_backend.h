@@ -22,12 +22,16 @@ class CpuBackend : public Backend {
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
   const SampleCounts& sample_counts() const override { return counts_; }
+  void record_sdf_evals(bool on) override { record_evals_ = on; }
+  const std::vector<float>& sdf_eval_counts() const override { return evals_; }
 
  private:
   int threads_, tile_size_;
   bool packets_;
   std::unique_ptr<Scene> scene_;
   SampleCounts counts_;
+  bool record_evals_ = false;
+  std::vector<float> evals_;
 };
 
 }  // namespace sdfreel

@@ -14,16 +14,19 @@ struct RayPassTargets {
   ImageRGBA* colour;
   ImageRGBA* depth;  // null: none
   bool test, write_depth;
+  ImageRGBA* evals;  // null: not counted
 };
 
 // One ray's result into the targets, as GL's fragment stage would: discard, depth test, writes.
-void store(const RayPassTargets& t, int x, int y, const glm::vec3& colour, float depth, bool keep) {
+void store(const RayPassTargets& t, int x, int y, const glm::vec3& colour, float depth, bool keep,
+           int32_t evals) {
   if (!keep) return;
   if (t.depth) {
     float* d = t.depth->at(x, y);
     if (t.test && !(depth < d[0])) return;
     if (t.write_depth) d[0] = depth;
   }
+  if (t.evals) t.evals->at(x, y)[0] = float(evals);
   float* p = t.colour->at(x, y);
   p[0] = colour.x;
   p[1] = colour.y;
@@ -41,8 +44,9 @@ void tile_scalar(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
       glm::vec3 colour(0.0f);
       float depth = 1.0f;
       bool keep = false;
+      const uint64_t before = stats.sdf_evals;
       pass.scalar(Ray{f.camera.origin, dir, pc.pixel_angle}, colour, depth, keep, stats);
-      store(out, x, y, colour, depth, keep);
+      store(out, x, y, colour, depth, keep, int32_t(stats.sdf_evals - before));
     }
 }
 
@@ -62,7 +66,8 @@ void tile_packets(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
     trace_packet(pass, pc, x, y, count, result, stats);
     for (int i = 0; i < count; ++i) {
       const int k = base + i;
-      store(out, t.x0 + k % tw, t.y0 + k / tw, result.colour[i], result.depth[i], result.keep[i]);
+      store(out, t.x0 + k % tw, t.y0 + k / tw, result.colour[i], result.depth[i], result.keep[i],
+            result.evals[i]);
     }
   }
 }
@@ -75,7 +80,8 @@ void run_ray_pass(const RayPass& pass, const CpuPassContext& pc, CpuTargets& tar
   const bool packets = pass.packet && (pc.packets || !pass.scalar);
   if (!packets && !pass.scalar)
     throw std::runtime_error("ray pass '" + pass.name + "' has no CPU code");
-  RayPassTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false};
+  RayPassTargets out{&targets.get(pass.colour, pass.name), nullptr, false, false, nullptr};
+  if (!pass.sdf_evals.empty()) out.evals = &targets.get(pass.sdf_evals, pass.name);
   if (!pass.depth.empty()) {
     out.depth = &targets.get(pass.depth, pass.name);
     out.test = pass.depth_test != DepthTest::Off;

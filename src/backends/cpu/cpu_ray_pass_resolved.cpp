@@ -26,7 +26,8 @@ struct SamplePair {
 };
 
 struct Sums {
-  ImageRGBA all, odd;  // all samples; those at odd list positions
+  ImageRGBA all, odd;      // all samples; those at odd list positions
+  float* evals = nullptr;  // SDF evaluations of all samples, a value a pixel; null: none
 };
 
 // Traces pairs [from, to) eight at a time (the last packet padded with its last ray) and adds each
@@ -53,6 +54,7 @@ void trace_pairs(const RayPass& pass, const CpuPassContext& pc,
       s[0] += c.x;
       s[1] += c.y;
       s[2] += c.z;
+      if (sums.evals && result.keep[i]) sums.evals[p.pixel] += float(result.evals[i]);
       if (p.sample & 1) {
         float* o = &sums.odd.pixels[size_t(p.pixel) * 4];
         o[0] += c.x;
@@ -98,10 +100,15 @@ void run_round(const RayPass& pass, const CpuPassContext& pc, const std::vector<
 }  // namespace
 
 ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
-                                const glm::vec4& clear, RayStats& stats, SampleCounts* counts) {
+                                const glm::vec4& clear, RayStats& stats, SampleCounts* counts,
+                                std::vector<float>* evals) {
   const FrameContext& f = pc.frame;
   const AdaptiveSampling a = sampling_of(f);
   Sums sums{ImageRGBA(f.width, f.height), ImageRGBA(f.width, f.height)};
+  if (evals) {
+    evals->assign(size_t(f.width) * f.height, 0.0f);
+    if (!pass.sdf_evals.empty()) sums.evals = evals->data();
+  }
   LivePixels live(a, f.width, f.height);
   const std::vector<int> order = pixels_by_tile(f.width, f.height, pc.tile_size);
   for (int from = 0;;) {

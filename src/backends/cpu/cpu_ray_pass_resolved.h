@@ -11,6 +11,7 @@
 // (the packet-path and resolved-pass tests hold scenes to that), so the grouping never changes
 // bits. Fixed sampling is the one-round case (minimum = maximum = samples).
 #include <optional>
+#include <vector>
 
 #include "backends/cpu/cpu_pass_context.h"
 #include "render/frame_plan.h"
@@ -24,9 +25,11 @@ const RayPass* resolvable_ray_pass(const FramePlan& plan);
 
 // The frame (sum of a pixel's samples times 1/its count, alpha 1); `clear` is the colour target's
 // clear value, which a sample that the pass does not keep adds. `counts`, when given, receives
-// the samples each pixel took.
+// the samples each pixel took; `evals` the SDF evaluations of all a pixel's samples together
+// (row-major, top row first; zeros when the pass counts none).
 ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
                                 const glm::vec4& clear, RayStats& stats,
-                                SampleCounts* counts = nullptr);
+                                SampleCounts* counts = nullptr,
+                                std::vector<float>* evals = nullptr);
 
 }  // namespace sdfreel

@@ -34,7 +34,7 @@ void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, R
 }
 
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
-                       RayStats& stats, SampleCounts* counts) {
+                       RayStats& stats, SampleCounts* counts, std::vector<float>* evals) {
   CpuPassContext pc{
       ctx,
       glm::vec2(0.5f),
@@ -47,7 +47,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     glm::vec4 clear(0.0f);
     for (const TargetSpec& t : plan_targets(plan))
       if (t.name == COLOUR_TARGET) clear = t.clear;
-    return run_ray_pass_resolved(*ray, pc, clear, stats, counts);
+    return run_ray_pass_resolved(*ray, pc, clear, stats, counts, evals);
   }
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   targets.clear();
@@ -55,6 +55,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
   LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
   std::vector<MeshPassCache> caches(plan.passes.size());  // one per pass, for the frame
+  if (evals) evals->assign(size_t(ctx.width) * ctx.height, 0.0f);
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
     if (live.round_ends_at(i) && live.decide(i, sum, sum_odd) == 0) break;
     pc.offset = ctx.sample_offsets[size_t(i)];
@@ -64,6 +65,11 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
     add_live(colour, live, sum);
     if (i & 1) add_live(colour, live, sum_odd);
+    if (evals) {
+      const ImageRGBA& e = targets.get(SDF_EVALS_TARGET, "resolve");
+      for (size_t k = 0; k < evals->size(); ++k)
+        if (live.live(k)) (*evals)[k] += e.pixels[k * 4];
+    }
   }
   // Times 1 / count, as the samples' mean always was; alpha is coverage, 1 for every frame.
   normalise_sums(sum, live.counts());

@@ -6,6 +6,8 @@
 // any other plan runs every pass over the whole frame for each sample while any pixel is live and
 // adds the sample only to live pixels, so image passes still read every neighbour. Such plans get
 // the same pictures, but save time only when every pixel stops.
+#include <vector>
+
 #include "backends/cpu/cpu_mesh_pass.h"
 #include "backends/cpu/cpu_pass_context.h"
 #include "backends/cpu/cpu_targets.h"
@@ -26,7 +28,10 @@ struct CpuRunSettings {
 void run_pass(const Pass& pass, const CpuPassContext& pc, CpuTargets& targets, RayStats& stats,
               MeshPassCache* cache = nullptr);
 
+// `counts`, when given, receives the samples each pixel took; `evals` the SDF evaluations of all a
+// pixel's samples together, the "sdf_evals" target summed as GL sums it (row-major, top row first).
 ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const CpuRunSettings& s,
-                       RayStats& stats, SampleCounts* counts = nullptr);
+                       RayStats& stats, SampleCounts* counts = nullptr,
+                       std::vector<float>* evals = nullptr);
 
 }  // namespace sdfreel

@@ -10,7 +10,7 @@ namespace sdfreel {
 
 // Traces the rays through image positions (x[i], y[i]) of lanes 0..count-1 (count <= LANES; the
 // caller repeats its last position in the lanes beyond) into result, whose keep and depth start at
-// false and 1 as GL's fragment stage would have them.
+// false and 1 as GL's fragment stage would have them; evals[i] is what lane i counted.
 inline void trace_packet(const RayPass& pass, const CpuPassContext& pc, const F8& x, const F8& y,
                          int count, RayPassOutput& result, RayStats& stats) {
   const FrameContext& f = pc.frame;
@@ -23,7 +23,9 @@ inline void trace_packet(const RayPass& pass, const CpuPassContext& pc, const F8
     result.keep[i] = false;
     result.depth[i] = 1.0f;
   }
+  stats.lane_evals = splat_mask(false);
   pass.packet(packet, result, stats);
+  for (int i = 0; i < LANES; ++i) result.evals[i] = stats.lane_evals[i];
 }
 
 }  // namespace sdfreel

@@ -121,7 +121,8 @@ ImageRGBA GlBackend::render(const FrameContext& ctx, RayStats& stats) {
     textures_key_ = key;
   }
   inputs.textures = textures_;
-  ImageRGBA image = runner_->run(scene_->frame_plan(ctx), ctx, inputs, stats, &counts_);
+  ImageRGBA image = runner_->run(scene_->frame_plan(ctx), ctx, inputs, stats, &counts_,
+                                 record_evals_ ? &evals_ : nullptr);
   platform_->release();  // the next frame may come from another thread
   return image;
 }

@@ -27,6 +27,9 @@ class GlBackend : public Backend {
   void begin(const SceneInfo& scene) override;
   ImageRGBA render(const FrameContext& ctx, RayStats& stats) override;
   const SampleCounts& sample_counts() const override { return counts_; }
+  void record_sdf_evals(bool on) override { record_evals_ = on; }
+  // Empty for a user's shader, which counts none.
+  const std::vector<float>& sdf_eval_counts() const override { return evals_; }
   void set_frame_source(std::function<FrameContext(int)> source) override;
   void set_checkpoints(std::shared_ptr<BufferCheckpoints> checkpoints) override;
 
@@ -44,6 +47,8 @@ class GlBackend : public Backend {
   std::vector<GlTextureBinding> textures_;  // uploaded for shader_textures_key() textures_key_
   uint64_t textures_key_ = 0;
   SampleCounts counts_;
+  bool record_evals_ = false;
+  std::vector<float> evals_;
 };
 
 }  // namespace sdfreel

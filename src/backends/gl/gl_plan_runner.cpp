@@ -176,7 +176,8 @@ void GlPlanRunner::upload_packing(const std::vector<uint8_t>& live, int width, i
 }
 
 ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
-                            const GlSceneInputs& scene, RayStats& stats, SampleCounts* counts) {
+                            const GlSceneInputs& scene, RayStats& stats, SampleCounts* counts,
+                            std::vector<float>* evals_out) {
   std::vector<TargetSpec> specs = plan_targets(plan);
   const size_t plan_target_count = specs.size();
   for (const char* sum : {SUM_COLOUR, SUM_EVALS, SUM_ODD})
@@ -238,6 +239,10 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
   // float (below 2^24 a pixel).
   normalise_sums(img, live.counts());
   for (size_t i = 0; i < evals.pixels.size(); i += 4) stats.sdf_evals += uint64_t(evals.pixels[i]);
+  if (evals_out) {
+    evals_out->resize(evals.pixels.size() / 4);
+    for (size_t i = 0; i < evals_out->size(); ++i) (*evals_out)[i] = evals.pixels[i * 4];
+  }
   if (counts) *counts = live.counts();
   return img;
 }

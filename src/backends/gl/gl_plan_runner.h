@@ -38,8 +38,10 @@ struct GlSceneInputs {
 class GlPlanRunner {
  public:
   explicit GlPlanRunner(GlDriver& driver) : driver_(driver), targets_(driver.gl()) {}
+  // `counts` and `evals` as run_plan_cpu's (backends/cpu/plan_runner.h).
   ImageRGBA run(const FramePlan& plan, const FrameContext& ctx, const GlSceneInputs& scene,
-                RayStats& stats, SampleCounts* counts = nullptr);
+                RayStats& stats, SampleCounts* counts = nullptr,
+                std::vector<float>* evals = nullptr);
   // Compiles (once) the program of a pass, for warm-up and error messages before the first frame.
   GlProgramId program(const std::string& vertex, const std::string& fragment);
 

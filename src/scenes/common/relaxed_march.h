@@ -72,7 +72,7 @@ F8 march_lanes(const Map& map, const V3x8& ro, const V3x8& rd, F8 tmin, F8 tmax,
   for (int i = 0; i < s.max_steps && any(active); ++i) {
     const uint64_t n = count_lanes(active);
     stats.steps += n;
-    stats.sdf_evals += n;
+    stats.count_evals(active);
     const F8 d = map(ro + rd * t);
     // Back to the previous point plus a plain step (a `continue` of the scalar loop).
     const M8 back = active & (omega > 1.0f) & (dm::abs(d) + prev_d < step);

@@ -77,6 +77,7 @@ SceneInfo lantern_festival_scene_info() {
   info.default_camera = CameraPose{{4.0, 0.5, -10.0}, {2.5, 0.1, 4.0}, 50.0, 0.0};
   info.test_poses = lantern_festival::test_poses(info.default_camera);
   info.shader = "lantern_festival/lantern_festival.glsl";
+  info.counts_sdf_evals = true;
   info.make = [] { return std::unique_ptr<Scene>(new lantern_festival::LanternFestivalScene()); };
   return info;
 }

@@ -100,7 +100,7 @@ MarchHitLanes sphereTrace_lanes(const Sdf& sdf, const V3x8& o, const V3x8& dir, 
     if (i == lim.max_steps - 1) last = active;  // these spend the budget this step
     const F8 d = sdf(o + dir * s.t);
     const uint64_t n = count_lanes(active);
-    stats.sdf_evals += n;
+    stats.count_evals(active);
     stats.steps += n;
     const TraceStepLanes r = traceStep_lanes(s, d, active, t1, lim, t_offset, relax);
     out.hit |= r.hit;
@@ -171,7 +171,7 @@ MarchHitLanes marchWater_lanes(const LakeFrame& lake, const glm::vec3& o, const 
     const V3x8 p = o + dir * t;
     const F8 gap = sdfWater(lake, p);
     const uint64_t n = count_lanes(active);
-    stats.sdf_evals += n;
+    stats.count_evals(active);
     stats.steps += n;
     const M8 reject =
         active & relaxed &
@@ -266,7 +266,7 @@ CellHitLanes marchCells_lanes(const LanternField& f, const V3x8& o, const V3x8& 
     budget += st;  // masks are -1
     const F8 d = lanternDistance(g, cell_lanes, o + dir * s.t, true);
     const uint64_t n = count_lanes(st);
-    stats.sdf_evals += n;
+    stats.count_evals(st);
     stats.steps += n;
     const TraceStepLanes r = traceStep_lanes(s, d, st, b, lim, t_offset, relax);
     out.hit |= r.hit;

@@ -342,7 +342,7 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u,
   for (int j = 0; j < SHAPE_COUNT; ++j) {
     if (j == light) continue;
     if (!any(alive)) break;  // every lane has its answer: no more counts, no more work
-    stats.sdf_evals += count_lanes(alive);
+    stats.count_evals(alive);
     const M8 in = alive & (views[j].sdf <= 0.0f);
     dark |= in;
     alive &= ~in;
@@ -389,7 +389,7 @@ F8 nearestDist8(P8 p, int skip, M8 active, const BeamsUniforms& u, RayStats& sta
   F8 d = splat(1e30f);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
     if (j == skip) continue;
-    stats.sdf_evals += count_lanes(active);
+    stats.count_evals(active);
     d = dm::min(d, shapeSDF8(p, u.shapes[j]));
   }
   return d;
@@ -453,7 +453,7 @@ void radiancePacket(const RayPacket& rays, const BeamsUniforms& u, glm::vec3* ou
   F8 r = splat(u.background.x), g = splat(u.background.y), b = splat(u.background.z);
   for (int i = 0; i < OCCLUDER; ++i) {
     if (!(u.gain[i] > 0.0f)) continue;
-    stats.sdf_evals += count_lanes(live);
+    stats.count_evals(live);
     const F8 d = seed ? shapeSDF8(p, u.shapes[i]) : views[i].sdf;
     const F8 fade = 1.0f * (1.0f - u.fades[i]) + cornerFade8(p) * u.fades[i];
     const F8 gain = u.gain[i] * fade;

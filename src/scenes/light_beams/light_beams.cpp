@@ -108,6 +108,7 @@ SceneInfo light_beams_scene_info() {
   info.map_up = {0.0, 0.0, 1.0};  // the map looks at the plane from further away
   info.map_side_view = false;     // the plane edge-on
   info.shader = "light_beams/light_beams.glsl";
+  info.counts_sdf_evals = true;
   info.make = [] { return std::unique_ptr<Scene>(new LightBeamsScene()); };
   return info;
 }

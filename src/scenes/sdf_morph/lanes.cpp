@@ -76,7 +76,7 @@ V3x8 safe_normalize_lanes(const V3x8& v) {
 
 // calcNormal in lanes; lanes outside `active` are computed but not counted.
 V3x8 calcNormal_lanes(const V3x8& p, F8 e, M8 active, const MorphUniforms& u, RayStats& stats) {
-  stats.sdf_evals += 4 * count_lanes(active);
+  stats.count_evals(active, 4);
   const vec3 a(1.0f, -1.0f, -1.0f), b(-1.0f, -1.0f, 1.0f), c(-1.0f, 1.0f, -1.0f),
       d(1.0f, 1.0f, 1.0f);
   return safe_normalize_lanes(a * mapScene_lanes(p + a * e, u) + b * mapScene_lanes(p + b * e, u) +
@@ -103,7 +103,7 @@ F8 softShadow_lanes(const V3x8& ro, M8 active, const MorphUniforms& u, RayStats&
     if (!any(live)) break;
     const uint64_t n = count_lanes(live);
     stats.steps += n;
-    stats.sdf_evals += n;
+    stats.count_evals(live);
     const F8 margin = dm::max(OBJECT_BOUND_MARGIN, t / u.shadow_k);
     M8 exact;
     const F8 h = mapSceneBounded(ro + rd * t, u, margin, exact);
@@ -125,7 +125,7 @@ F8 softShadow_lanes(const V3x8& ro, M8 active, const MorphUniforms& u, RayStats&
 // ambientOcclusion in lanes; lanes outside `active` are computed but not counted.
 F8 ambientOcclusion_lanes(const V3x8& p, const V3x8& n, M8 active, const MorphUniforms& u,
                           RayStats& stats) {
-  stats.sdf_evals += AO_TAPS * count_lanes(active);
+  stats.count_evals(active, AO_TAPS);
   F8 occ = splat(0.0f);
   float scale = 1.0f;
   for (int i = 0; i < AO_TAPS; ++i) {

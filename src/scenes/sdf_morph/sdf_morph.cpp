@@ -86,6 +86,7 @@ SceneInfo sdf_morph_scene_info() {
   info.default_camera = CameraPose{{0.0, 1.45, -3.4}, {0.0, 0.72, 0.0}, 40.0, 0.0};
   info.test_poses = test_poses(info.default_camera);
   info.shader = "sdf_morph/sdf_morph.glsl";
+  info.counts_sdf_evals = true;
   info.make = [] { return std::unique_ptr<Scene>(new SdfMorphScene()); };
   return info;
 }

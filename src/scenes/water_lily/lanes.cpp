@@ -58,12 +58,14 @@ void radiancePacket(const RayPacket& rays, const LilyUniforms& u, glm::vec3* out
   PixelShade shade[LANES];
   SecondaryRays secondary[LANES];
   for (int i = 0; i < rays.count; ++i) {
+    const LaneEvalScope lane(stats, i);
     shade[i] = shadeBegin(rays.ray(i), spans[i], t[i], u, stats);
     secondary[i] = shade[i].rays;
   }
   traceSecondaryLanes(secondary, rays.count, u, stats);
   for (int i = 0; i < rays.count; ++i) {
     shade[i].rays = secondary[i];
+    const LaneEvalScope lane(stats, i);
     out[i] = shadeEnd(shade[i], u, stats);
   }
 }

@@ -59,7 +59,7 @@ F8 softShadowLanes(const V3x8& ro, const glm::vec3& ld, float k, int steps, M8 a
     if (!any(active)) break;
     const uint64_t n = count_lanes(active);
     stats.steps += n;
-    stats.sdf_evals += n;
+    stats.count_evals(active);
     const Nearest8 nn = mapNearest8(ro + ld * t, u, dm::max(splat(BOUND_MARGIN), t / k));
     const F8 h = nn.est;
     const M8 hit = active & (h < SHADOW_HIT_EPS);

@@ -1,0 +1,21 @@
+#include "render/compositing_passes.h"
+
+namespace sdfreel {
+
+const std::vector<CompositingPass>& compositing_passes() {
+  static const std::vector<CompositingPass> passes = {
+      {"samples", {"samples"}, "the samples the pixel took (adaptive sampling varies it)"},
+      {"sdf_evals",
+       {"sdf_evals"},
+       "the signed-distance evaluations the pixel cost, all its samples together"},
+  };
+  return passes;
+}
+
+const CompositingPass* find_compositing_pass(const std::string& name) {
+  for (const CompositingPass& p : compositing_passes())
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+}  // namespace sdfreel

@@ -1,0 +1,20 @@
+#pragma once
+// The compositing passes (render/compositing_passes.h) a scene gives, for the timeline's check of
+// [output] passes, `sdfreel scenes` and the scene table.
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace sdfreel {
+
+// Every scene gives "samples"; "sdf_evals" those whose marches count their evaluations
+// (SceneInfo::counts_sdf_evals). Inline: the timeline library, which links no scene code, checks
+// [output] passes with it.
+inline std::vector<std::string> scene_passes(const SceneInfo& scene) {
+  std::vector<std::string> passes = {"samples"};
+  if (scene.counts_sdf_evals) passes.push_back("sdf_evals");
+  return passes;
+}
+
+}  // namespace sdfreel
