@@ -63,7 +63,7 @@ int run_still(const StillOptions& o) {
   write_frame_file(o.output, frame_format(ext, tl.frame_options), f.linear, f.display,
                    frame_metadata(tl, f), f.passes);
   if (!o.sample_counts.empty()) {
-    const SampleCounts& counts = pipe.backend().sample_counts();
+    const SampleCounts& counts = f.sample_counts;
     if (counts_ext == ".exr")
       write_exr_atomic(o.sample_counts, sample_count_image(counts, tl.width, tl.height),
                        frame_metadata(tl, f));

@@ -64,7 +64,8 @@ RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
   f.ctx = ctx;
   const auto start = std::chrono::steady_clock::now();
   f.linear = backend_->render(ctx, f.stats);
-  f.passes = pass_images(tl_.frame_options.passes, *backend_, ctx.width, ctx.height);
+  f.sample_counts = backend_->sample_counts();  // before passes that render again
+  f.passes = pass_images(tl_.frame_options.passes, *backend_, ctx);
   // Shadertoy code often divides by zero: shown black, as on the site, unless asked otherwise.
   if (scene_->shader_project && scene_->shader_project->non_finite_black) {
     std::string first;

@@ -18,6 +18,7 @@ struct RenderedFrame {
   ImageRGBA linear;  // half-rounded
   ImageRGB16 display;
   std::string linear_hash, display_md5;
+  SampleCounts sample_counts;     // the samples each pixel took
   std::vector<PassImage> passes;  // [output] passes, for the EXR frame; never hashed
   RayStats stats;
   double seconds = 0.0;

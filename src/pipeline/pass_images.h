@@ -1,6 +1,6 @@
 #pragma once
-// The compositing passes of a rendered frame (render/compositing_passes.h), gathered from what
-// the backend kept of it.
+// The compositing passes of a rendered frame (render/compositing_passes.h): what the backend kept
+// of the frame (samples, sdf_evals), and what it renders again in another mode (id).
 #include <string>
 #include <vector>
 
@@ -11,9 +11,11 @@ namespace sdfreel {
 
 // Tells the backend which of them need it to record more than it does by default (before begin).
 void record_passes(const std::vector<std::string>& names, Backend& backend);
-// The passes `names` of the frame `backend` rendered last, at its size. Throws std::logic_error
-// for a pass the backend did not record.
-std::vector<PassImage> pass_images(const std::vector<std::string>& names, const Backend& backend,
-                                   int width, int height);
+// The passes `names` of frame `ctx`, which `backend` rendered last, in that order. "id" renders
+// the frame once more, one ray through each pixel's centre, in the scenes' hit-mask mode
+// (MarchSettings::hit_mask), so it comes after what was kept of the frame itself. Throws
+// std::logic_error for a pass the backend did not record.
+std::vector<PassImage> pass_images(const std::vector<std::string>& names, Backend& backend,
+                                   const FrameContext& ctx);
 
 }  // namespace sdfreel

@@ -8,6 +8,7 @@ const std::vector<CompositingPass>& compositing_passes() {
       {"sdf_evals",
        {"sdf_evals"},
        "the signed-distance evaluations the pixel cost, all its samples together"},
+      {"id", {"id"}, "the scene's number of the surface at the pixel's centre (0: none)"},
   };
   return passes;
 }

@@ -9,11 +9,13 @@
 namespace sdfreel {
 
 // Every scene gives "samples"; "sdf_evals" those whose marches count their evaluations
-// (SceneInfo::counts_sdf_evals). Inline: the timeline library, which links no scene code, checks
-// [output] passes with it.
+// (SceneInfo::counts_sdf_evals); "id" the built-in scenes, which draw their surfaces' numbers
+// instead of colours when asked (MarchSettings::hit_mask), a user's shader does not. Inline: the
+// timeline library, which links no scene code, checks [output] passes with it.
 inline std::vector<std::string> scene_passes(const SceneInfo& scene) {
   std::vector<std::string> passes = {"samples"};
   if (scene.counts_sdf_evals) passes.push_back("sdf_evals");
+  if (scene.make) passes.push_back("id");
   return passes;
 }
 

@@ -22,11 +22,11 @@ std::string with_passes(const std::string& passes) {
 
 TEST(Passes, EveryExrFrameCarriesThemAndTheHashesStay) {
   const std::string dir = scratch_dir("passes");
-  write_file(dir + "/t.toml", with_passes("passes = [\"samples\", \"sdf_evals\"]\n"));
+  write_file(dir + "/t.toml", with_passes("passes = [\"samples\", \"sdf_evals\", \"id\"]\n"));
   RunResult r = run_sdfreel("render t.toml --no-video", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto m = nlohmann::json::parse(read_file(dir + "/out/manifest.json"));
-  EXPECT_EQ(m["frame_options"]["passes"], "samples,sdf_evals");
+  EXPECT_EQ(m["frame_options"]["passes"], "samples,sdf_evals,id");
   for (int i = 0; i < 3; ++i) {
     const std::string path = dir + "/out/frames/0000" + std::to_string(i) + ".exr";
     {
@@ -39,6 +39,12 @@ TEST(Passes, EveryExrFrameCarriesThemAndTheHashesStay) {
       EXPECT_EQ(channels.findChannel("sdf_evals")->type, Imf::FLOAT);
     }
     for (float v : read_exr_channel(path, "samples")) ASSERT_EQ(v, 1.0f);  // samples = 1
+    int object = 0;  // sdf_morph's ids: 1 the object, 2 its pedestal, 0 anything else
+    for (float v : read_exr_channel(path, "id")) {
+      ASSERT_TRUE(v == 0.0f || v == 1.0f || v == 2.0f) << v;
+      object += v == 1.0f;
+    }
+    EXPECT_GT(object, 20);
     double evals = 0.0;
     for (float v : read_exr_channel(path, "sdf_evals")) evals += v;
     const double per_pixel = m["frames"][i]["sdf_evals_per_pixel"];

@@ -60,16 +60,39 @@ TEST(CompositingPasses, EvalsAddUpToTheFrameCountOnBothCpuPathsInEveryScene) {
   }
 }
 
+// The id pass names the surface under each pixel's centre, in the scene's numbering: sdf_morph's
+// object (1) and pedestal (2) where the default camera sees them, nothing (0) above them.
+TEST(CompositingPasses, IdIsTheSurfaceAtThePixelsCentre) {
+  const Timeline tl = small_timeline("sdf_morph", "samples = 3", "passes = [\"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  const RenderedFrame f = pipe.render(5);
+  const std::vector<float>& id = pass_named(f, "id").values;
+  EXPECT_EQ(id[8 * 48 + 22], 1.0f);   // the morphing object
+  EXPECT_EQ(id[18 * 48 + 24], 2.0f);  // its pedestal
+  EXPECT_EQ(id[0], 0.0f);             // the studio behind
+  for (float v : id) ASSERT_TRUE(v == 0.0f || v == 1.0f || v == 2.0f) << v;
+  // One ray through each centre in hit-mask mode: exactly that render of the frame's context.
+  FrameContext ctx = f.ctx;
+  ctx.samples = 1;
+  finish_frame_context(ctx);
+  ctx.march.hit_mask = true;
+  CpuBackend cpu(1);
+  cpu.begin(pipe.scene());
+  RayStats stats;
+  const ImageRGBA mask = cpu.render(ctx, stats);
+  for (size_t i = 0; i < id.size(); ++i) ASSERT_EQ(id[i], mask.pixels[i * 4]) << i;
+}
+
 // An adaptive frame of a plan of several passes (the museum) and of one ray pass (the lanterns):
 // the samples pass is the backend's count, and the picture is the one rendered without passes.
 TEST(CompositingPasses, SamplesAreTheBackendsCountsAndPassesChangeNoPixel) {
   for (const std::string scene : {"museum", "lantern_festival"}) {
     const std::string sampling = "adaptive = { minimum = 1, maximum = 6, threshold = 0.02 }";
-    const Timeline with = small_timeline(scene, sampling, "passes = [\"samples\"]");
+    const Timeline with = small_timeline(scene, sampling, "passes = [\"samples\", \"id\"]");
     const Timeline without = small_timeline(scene, sampling, "");
     FramePipeline pipe(with, std::make_unique<CpuBackend>(2));
     const RenderedFrame f = pipe.render(3);
-    const SampleCounts& counts = pipe.backend().sample_counts();
+    const SampleCounts& counts = f.sample_counts;  // the frame's, not the id render's
     const PassImage& samples = pass_named(f, "samples");
     EXPECT_EQ(samples.channels, std::vector<std::string>{"samples"});
     ASSERT_EQ(samples.values.size(), counts.size());

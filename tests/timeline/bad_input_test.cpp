@@ -269,13 +269,13 @@ TEST_F(BadInput, UnknownFrameFormat) {
 // [output] passes: known names, each once, that the scene gives, into EXR frames.
 TEST_F(BadInput, CompositingPasses) {
   expect_error(video_with("[output]\npasses = [\"sampels\"]"),
-               "unknown pass 'sampels': use samples or sdf_evals", 4, 11);
+               "unknown pass 'sampels': use samples, sdf_evals or id", 4, 11);
   expect_error(video_with("[output]\npasses = [\"samples\", \"samples\"]"),
                "pass 'samples' is named twice", 4, 22);
   expect_error(video_with("[output]\nframes = [\"png\"]\npasses = [\"samples\"]"),
                "output.passes are channels of the EXR frames: add \"exr\" to output.frames", 5, 10);
   expect_error("[video]\nscene = \"fur\"\n[output]\npasses = [\"samples\", \"sdf_evals\"]\n",
-               "scene 'fur' gives no 'sdf_evals' pass (it gives samples)", 4, 22);
+               "scene 'fur' gives no 'sdf_evals' pass (it gives samples and id)", 4, 22);
   const Timeline tl = load_timeline(
       all_scenes(), write(video_with("[output]\npasses = [\"sdf_evals\", \"samples\"]")), nullptr);
   EXPECT_EQ(tl.frame_options.passes, (std::vector<std::string>{"sdf_evals", "samples"}));
