@@ -2,6 +2,7 @@
 // names, same order of operations; glm::dot/length -> dm_dot/dm_length). A change there must be
 // mirrored here: tests/osmesa compares the two backends' frames.
 #include "common/sample_loop.glsl"
+#include "common/surface_output.glsl"
 #include "sdf_morph/geometry.glsl"
 #include "sdf_morph/shading.glsl"
 
@@ -259,6 +260,7 @@ vec3 sceneRadiance(Ray ray, MorphUniforms u, inout RayStats stats) {
       }
       precise float e = normalEps(ray.pixel_angle, t, u);
       precise vec3 n = calcNormal(p, e, u, stats);
+      if (u.surface != SURFACE_COLOUR) { precise vec3 r_ = surfaceOutput(u.surface, t, n); return r_; }
       precise float bias = surfaceBias(hitEps(eps_per_t, t, u));
       if (isObject(p, u)) {
         precise vec3 refl =
@@ -271,6 +273,11 @@ vec3 sceneRadiance(Ray ray, MorphUniforms u, inout RayStats stats) {
     }
   }
   if (u.hit_mask != 0) { precise vec3 r_ = vec3(HIT_ID_NONE); return r_; }
+  if (u.surface != SURFACE_COLOUR) {
+    precise vec3 r_ = floor_visible ? surfaceOutput(u.surface, t_floor, vec3(0.0, 1.0, 0.0))
+                                    : noSurface(u.surface);
+    return r_;
+  }
   if (floor_visible) {
     precise float bias = surfaceBias(hitEps(eps_per_t, t_floor, u));
     precise vec3 r_ = shadeFloor(ro + rd * t_floor, rd, bias, true, u, stats);

@@ -1,8 +1,10 @@
 #include "pipeline/pass_images.h"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 
+#include "render/camera.h"
 #include "render/rays.h"
 #include "render/sample_pattern.h"
 
@@ -13,18 +15,41 @@ bool asked(const std::vector<std::string>& names, const char* name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// The id of the surface under each pixel's centre: the frame in hit-mask mode, one sample.
-std::vector<float> surface_ids(Backend& backend, const FrameContext& frame) {
+// The frame once more, one ray through each pixel's centre, in a mode that draws something else
+// than colour (MarchSettings::hit_mask, ::surface).
+ImageRGBA render_at_centres(Backend& backend, const FrameContext& frame,
+                            const std::function<void(MarchSettings&)>& mode) {
   FrameContext ctx = frame;
   ctx.samples = 1;
   ctx.adaptive.enabled = false;
   ctx.sample_offsets = sample_offsets(1);  // the pixel's centre
-  ctx.march.hit_mask = true;
+  mode(ctx.march);
   RayStats ignored;
-  const ImageRGBA ids = backend.render(ctx, ignored);
-  std::vector<float> out(ids.pixels.size() / 4);
-  for (size_t i = 0; i < out.size(); ++i) out[i] = ids.pixels[i * 4];
+  return backend.render(ctx, ignored);
+}
+
+// The first `channels` channels of each pixel.
+std::vector<float> channels_of(const ImageRGBA& img, int channels) {
+  std::vector<float> out;
+  out.reserve(img.pixels.size() / 4 * size_t(channels));
+  for (size_t i = 0; i < img.pixels.size(); i += 4)
+    out.insert(out.end(), img.pixels.begin() + std::ptrdiff_t(i),
+               img.pixels.begin() + std::ptrdiff_t(i) + channels);
   return out;
+}
+
+// Distances along the centres' rays as distances from the camera's plane (a z-buffer's depth).
+std::vector<float> planar_depths(const ImageRGBA& distances, const FrameContext& ctx) {
+  std::vector<float> z = channels_of(distances, 1);
+  for (int y = 0; y < ctx.height; ++y)
+    for (int x = 0; x < ctx.width; ++x) {
+      float& v = z[size_t(y) * ctx.width + x];
+      if (v == NO_SURFACE_DISTANCE) continue;
+      const glm::vec3 dir =
+          primary_ray_dir(ctx.camera, float(x) + 0.5f, float(y) + 0.5f, ctx.width, ctx.height);
+      v *= glm::dot(dir, ctx.camera.forward);
+    }
+  return z;
 }
 
 }  // namespace
@@ -49,8 +74,18 @@ std::vector<PassImage> pass_images(const std::vector<std::string>& names, Backen
     }
     out.push_back(std::move(img));
   }
-  for (PassImage& img : out)  // then what renders again
-    if (img.name == "id") img.values = surface_ids(backend, ctx);
+  for (PassImage& img : out) {  // then what renders again
+    if (img.name == "id")
+      img.values = channels_of(
+          render_at_centres(backend, ctx, [](MarchSettings& m) { m.hit_mask = true; }), 1);
+    if (img.name == "depth")
+      img.values = planar_depths(
+          render_at_centres(backend, ctx, [](MarchSettings& m) { m.surface = SURFACE_DISTANCE; }),
+          ctx);
+    if (img.name == "normal")
+      img.values = channels_of(
+          render_at_centres(backend, ctx, [](MarchSettings& m) { m.surface = SURFACE_NORMAL; }), 3);
+  }
   for (const PassImage& img : out)
     if (img.values.size() != pixels * img.channels.size())
       throw std::logic_error("the " + backend.name() + " backend kept no '" + img.name +

@@ -9,6 +9,12 @@ const std::vector<CompositingPass>& compositing_passes() {
        {"sdf_evals"},
        "the signed-distance evaluations the pixel cost, all its samples together"},
       {"id", {"id"}, "the scene's number of the surface at the pixel's centre (0: none)"},
+      {"depth",
+       {"Z"},
+       "the distance of the surface at the pixel's centre from the camera's plane (1e10: none)"},
+      {"normal",
+       {"N.X", "N.Y", "N.Z"},
+       "the world-space unit normal of the surface at the pixel's centre (0: none)"},
   };
   return passes;
 }

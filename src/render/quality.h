@@ -26,7 +26,16 @@ struct MarchSettings {
   // ray's march hit (0 = none; each scene numbers its marched surfaces 1, 2, ...) in all three
   // channels, instead of a colour.
   bool hit_mask = false;
+  // What the primary ray's surface shows instead of a colour, for the depth and normal passes
+  // (scenes/common/surface_output.h): one of the SURFACE_ modes below.
+  int surface = 0;
 };
+
+constexpr int SURFACE_COLOUR = 0;    // the picture
+constexpr int SURFACE_DISTANCE = 1;  // the surface's distance along the ray, in all three channels
+constexpr int SURFACE_NORMAL = 2;    // its world-space unit normal
+// The distance of no surface (the sky, a miss), as Blender writes it for the background.
+constexpr float NO_SURFACE_DISTANCE = 1e10f;
 
 // The pixel footprint (radians at unit distance) that hit_eps and normal_eps are measured in:
 // 2 tan(fov/2) / height, the size of a pixel at the image centre, but at most

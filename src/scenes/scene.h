@@ -83,6 +83,10 @@ struct SceneInfo {
   // Its marches count their SDF evaluations per ray on both backends (RayStats, the GLSL
   // sdf_evals output): the bench's evaluations a pixel and the sdf_evals compositing pass.
   bool counts_sdf_evals = false;
+  // It draws its primary surfaces' distance and normal instead of colours when
+  // MarchSettings::surface asks (scenes/common/surface_output.h), on both backends: the depth and
+  // normal compositing passes.
+  bool draws_surfaces = false;
 };
 
 // The poses the scene-wide tests render: the default camera, the same eye looking down steeply

@@ -12,7 +12,9 @@
 
 #include "backends/cpu/cpu_backend.h"
 #include "pipeline/frame_pipeline.h"
+#include "render/camera.h"
 #include "scenes/registry.h"
+#include "scenes/scene_passes.h"
 #include "timeline/timeline.h"
 
 namespace sdfreel {
@@ -60,6 +62,23 @@ TEST(CompositingPasses, EvalsAddUpToTheFrameCountOnBothCpuPathsInEveryScene) {
   }
 }
 
+// Every pass a scene gives is the same from the CPU's packets as from its single rays.
+TEST(CompositingPasses, PacketsAndSingleRaysGiveTheSamePassesInEveryScene) {
+  for (const SceneInfo& scene : all_scenes()) {
+    if (!scene.make) continue;
+    std::string names;
+    for (const std::string& p : scene_passes(scene))
+      names += (names.empty() ? "\"" : ", \"") + p + "\"";
+    const Timeline tl = small_timeline(scene.name, "samples = 2", "passes = [" + names + "]");
+    FramePipeline packets(tl, std::make_unique<CpuBackend>(2, 16, true));
+    FramePipeline rays(tl, std::make_unique<CpuBackend>(2, 16, false));
+    const RenderedFrame a = packets.render(7), b = rays.render(7);
+    ASSERT_EQ(a.passes.size(), scene_passes(scene).size());
+    for (size_t i = 0; i < a.passes.size(); ++i)
+      EXPECT_EQ(a.passes[i].values, b.passes[i].values) << scene.name << ": " << a.passes[i].name;
+  }
+}
+
 // The id pass names the surface under each pixel's centre, in the scene's numbering: sdf_morph's
 // object (1) and pedestal (2) where the default camera sees them, nothing (0) above them.
 TEST(CompositingPasses, IdIsTheSurfaceAtThePixelsCentre) {
@@ -81,6 +100,45 @@ TEST(CompositingPasses, IdIsTheSurfaceAtThePixelsCentre) {
   RayStats stats;
   const ImageRGBA mask = cpu.render(ctx, stats);
   for (size_t i = 0; i < id.size(); ++i) ASSERT_EQ(id[i], mask.pixels[i * 4]) << i;
+}
+
+// Depth and normal at known surfaces: where sdf_morph's camera sees the floor (y = 0), the normal
+// is (0, 1, 0) and the depth the floor's distance from the camera's plane; the object's normals
+// are unit vectors and its depths nearer than the floor behind it; the sky is 1e10 and no normal.
+TEST(CompositingPasses, DepthAndNormalOfTheFloorAndTheObject) {
+  const Timeline tl =
+      small_timeline("sdf_morph", "samples = 2", "passes = [\"depth\", \"normal\", \"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  const RenderedFrame f = pipe.render(5);
+  const std::vector<float>& z = pass_named(f, "depth").values;
+  const std::vector<float>& n = pass_named(f, "normal").values;
+  const std::vector<float>& id = pass_named(f, "id").values;
+  EXPECT_EQ(pass_named(f, "normal").channels, (std::vector<std::string>{"N.X", "N.Y", "N.Z"}));
+  const CameraBasis& cam = f.ctx.camera;
+  int floor = 0, object = 0, sky = 0;
+  for (int y = 0; y < 27; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const size_t i = size_t(y) * 48 + x;
+      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 dir = primary_ray_dir(cam, x + 0.5f, y + 0.5f, 48, 27);
+      if (id[i] == 0.0f && normal == glm::vec3(0.0f, 1.0f, 0.0f)) {  // the floor
+        const float t = -cam.origin.y / dir.y;
+        EXPECT_NEAR(z[i], t * glm::dot(dir, cam.forward), 1e-5f * z[i]) << x << ", " << y;
+        ++floor;
+      } else if (id[i] == 1.0f) {
+        EXPECT_NEAR(glm::length(normal), 1.0f, 1e-5f);
+        EXPECT_LT(glm::dot(normal, dir), 0.1f);  // it faces the camera
+        EXPECT_GT(z[i], 2.0f);
+        EXPECT_LT(z[i], 5.0f);
+        ++object;
+      } else if (id[i] == 0.0f && z[i] == 1e10f) {
+        EXPECT_EQ(normal, glm::vec3(0.0f));
+        ++sky;
+      }
+    }
+  EXPECT_GT(floor, 100);
+  EXPECT_GT(object, 20);
+  EXPECT_GT(sky, 100);
 }
 
 // An adaptive frame of a plan of several passes (the museum) and of one ray pass (the lanterns):

@@ -269,7 +269,7 @@ TEST_F(BadInput, UnknownFrameFormat) {
 // [output] passes: known names, each once, that the scene gives, into EXR frames.
 TEST_F(BadInput, CompositingPasses) {
   expect_error(video_with("[output]\npasses = [\"sampels\"]"),
-               "unknown pass 'sampels': use samples, sdf_evals or id", 4, 11);
+               "unknown pass 'sampels': use samples, sdf_evals, id, depth or normal", 4, 11);
   expect_error(video_with("[output]\npasses = [\"samples\", \"samples\"]"),
                "pass 'samples' is named twice", 4, 22);
   expect_error(video_with("[output]\nframes = [\"png\"]\npasses = [\"samples\"]"),

@@ -1,7 +1,7 @@
 #pragma once
 // The march settings a marching scene's uniform struct carries (max_steps, shadow_steps,
-// reflect_steps, hit_eps, step_factor, normal_eps, max_dist, naive, hit_mask), copied from the
-// frame and named for GLSL the same way by every such scene.
+// reflect_steps, hit_eps, step_factor, normal_eps, max_dist, naive, hit_mask, surface), copied from
+// the frame and named for GLSL the same way by every such scene.
 #include "render/quality.h"
 #include "scenes/common/uniform_list.h"
 
@@ -18,6 +18,7 @@ void copy_march_settings(const MarchSettings& m, Uniforms& u) {
   u.max_dist = m.max_dist;
   u.naive = m.naive;
   u.hit_mask = m.hit_mask;
+  u.surface = m.surface;
 }
 
 template <class Uniforms>
@@ -30,7 +31,8 @@ UniformList& add_march_uniforms(UniformList& list, const Uniforms& u) {
       .f("normal_eps", u.normal_eps)
       .f("max_dist", u.max_dist)
       .flag("naive", u.naive)
-      .flag("hit_mask", u.hit_mask);
+      .flag("hit_mask", u.hit_mask)
+      .f("surface", float(u.surface));
 }
 
 }  // namespace sdfreel

@@ -1,6 +1,7 @@
 #include "scenes/sdf_morph/lanes.h"
 
 #include "scenes/common/relaxed_march.h"
+#include "scenes/common/surface_output.h"
 #include "scenes/sdf_morph/environment.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
@@ -165,6 +166,14 @@ void radiance_lanes(const RayPacket& rays, const MorphUniforms& u, glm::vec3* ou
   const F8 e = normalEps_lanes(rays.pixel_angle, t, u);
   F8 bias = surfaceBias_lanes(hitEps_lanes(eps_per_t, t, u));
   V3x8 n = calcNormal_lanes(p, e, hit, u, stats);
+  if (u.surface != SURFACE_COLOUR) {  // the depth and normal passes: the marched hit or the floor
+    for (int i = 0; i < rays.count; ++i)
+      out[i] = lane(hit, i) ? surfaceOutput(u.surface, t[i], n.lane(i))
+               : lane(spans.floor_visible, i)
+                   ? surfaceOutput(u.surface, spans.t_floor[i], vec3(0.0f, 1.0f, 0.0f))
+                   : noSurface(u.surface);
+    return;
+  }
   const M8 object = hit & isObject(p, u);
 
   // The object's mirror: reflection rays marched together.

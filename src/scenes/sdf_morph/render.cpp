@@ -1,6 +1,7 @@
 #include "scenes/sdf_morph/render.h"
 
 #include "scenes/common/relaxed_march.h"
+#include "scenes/common/surface_output.h"
 #include "scenes/sdf_morph/environment.h"
 #include "scenes/sdf_morph/geometry.h"
 #include "scenes/sdf_morph/march.h"
@@ -237,6 +238,7 @@ vec3 sceneRadiance(const Ray& ray, const MorphUniforms& u, RayStats& stats) {
       if (u.hit_mask) return vec3(isObject(p, u) ? HIT_ID_OBJECT : HIT_ID_PEDESTAL);
       const float e = normalEps(ray.pixel_angle, t, u);
       const vec3 n = calcNormal(p, e, u, stats);
+      if (u.surface != SURFACE_COLOUR) return surfaceOutput(u.surface, t, n);
       const float bias = surfaceBias(hitEps(s.eps_per_t, t, u));
       if (isObject(p, u)) {
         const vec3 refl =
@@ -247,6 +249,9 @@ vec3 sceneRadiance(const Ray& ray, const MorphUniforms& u, RayStats& stats) {
     }
   }
   if (u.hit_mask) return vec3(HIT_ID_NONE);  // the floor is a plane, not marched
+  if (u.surface != SURFACE_COLOUR)
+    return s.floor_visible ? surfaceOutput(u.surface, s.t_floor, vec3(0.0f, 1.0f, 0.0f))
+                           : noSurface(u.surface);
   if (s.floor_visible) {
     const float bias = surfaceBias(hitEps(s.eps_per_t, s.t_floor, u));
     return shadeFloor(ro + rd * s.t_floor, rd, bias, true, u, stats);

@@ -87,6 +87,7 @@ SceneInfo sdf_morph_scene_info() {
   info.test_poses = test_poses(info.default_camera);
   info.shader = "sdf_morph/sdf_morph.glsl";
   info.counts_sdf_evals = true;
+  info.draws_surfaces = true;
   info.make = [] { return std::unique_ptr<Scene>(new SdfMorphScene()); };
   return info;
 }

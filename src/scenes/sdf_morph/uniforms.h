@@ -45,6 +45,7 @@ struct MorphUniforms {
   float max_dist = 120.0f;
   bool naive = false;     // MarchSettings::naive: world-space epsilons, no bounds, factor 1
   bool hit_mask = false;  // MarchSettings::hit_mask: radiance = hit id (1 object, 2 pedestal)
+  int surface = 0;        // MarchSettings::surface: radiance = the hit's distance or normal
 };
 
 // Reads TIME, the parameters and the march settings from ctx. ctx.params must hold this scene's

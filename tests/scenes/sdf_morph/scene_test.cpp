@@ -226,7 +226,7 @@ TEST(SdfMorphScene, HandsItsFrameConstantsToTheShader) {
     EXPECT_EQ(int(s.values.size()), s.components) << s.name;
     EXPECT_TRUE(by_name.emplace(s.name, s.values).second) << "duplicate " << s.name;
   }
-  EXPECT_EQ(by_name.size(), 17u + 6u * sdf_morph::SOFTBOX_COUNT);  // every field of the struct
+  EXPECT_EQ(by_name.size(), 18u + 6u * sdf_morph::SOFTBOX_COUNT);  // every field of the struct
   EXPECT_EQ(by_name.at("u_morph.morph"), std::vector<float>{u.morph});
   EXPECT_EQ(by_name.at("u_morph.rot_sin"), std::vector<float>{u.rot_sin});
   EXPECT_EQ(by_name.at("u_morph.max_steps"), std::vector<float>{float(ctx.march.max_steps)});
