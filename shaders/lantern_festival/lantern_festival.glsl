@@ -4,6 +4,7 @@
 // frames. prepare() runs on the host; its results arrive as u_lake, u_grid, u_light, u_sky and
 // u_water (src/scenes/lantern_festival/uniforms.cpp), and the march settings as u_march.
 #include "common/sample_loop.glsl"
+#include "common/surface_output.glsl"
 #include "lantern_festival/march.glsl"
 #include "lantern_festival/shading.glsl"
 #include "lantern_festival/sky.glsl"
@@ -17,6 +18,7 @@ struct WaterUniforms {
   bool reference_march;  // Quality::Reference: the seed's sphere tracing of repeated()
   bool naive;            // MarchSettings::naive: plain sphere tracing, world-space epsilons
   bool hit_mask;         // MarchSettings::hit_mask: radiance = id of the primary hit
+  int surface;           // MarchSettings::surface (common/surface_output.glsl)
 };
 
 uniform WaterUniforms u_water;
@@ -109,6 +111,22 @@ vec3 radiance(Ray ray, inout RayStats stats) {
   }
   if (u_water.hit_mask)
     return vec3(lantern.hit ? HIT_ID_LANTERN : water.hit ? HIT_ID_WATER : HIT_ID_NONE);
+  if (u_water.surface != SURFACE_COLOUR) {  // the depth and normal passes
+    if (lantern.hit) {
+      precise vec3 p = ray.origin + ray.dir * lantern.t;
+      precise vec3 n = lanternNormal(lantern.cell, p, normalEps(lantern.t, ray.pixel_angle));
+      precise vec3 r_ = surfaceOutput(u_water.surface, lantern.t, n);
+      return r_;
+    }
+    if (water.hit) {
+      precise vec3 p = ray.origin + ray.dir * water.t;
+      precise vec3 n = waterNormal(p, normalEps(water.t, ray.pixel_angle));
+      precise vec3 r_ = surfaceOutput(u_water.surface, water.t, n);
+      return r_;
+    }
+    precise vec3 r_ = noSurface(u_water.surface);
+    return r_;
+  }
   if (lantern.hit)
     return applyFog(
         shadeLanternHit(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle), lantern.t);

@@ -35,4 +35,5 @@ struct LilyUniforms {
   float max_dist;
   int naive;     // MarchSettings::naive (0 or 1)
   int hit_mask;  // MarchSettings::hit_mask (0 or 1)
+  int surface;   // MarchSettings::surface (common/surface_output.glsl)
 };

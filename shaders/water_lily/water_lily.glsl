@@ -2,6 +2,7 @@
 // names, same order of operations; glm::dot/length -> dm_dot/dm_length). A change there must be
 // mirrored here: tests/osmesa compares the two backends' frames.
 #include "common/sample_loop.glsl"
+#include "common/surface_output.glsl"
 #include "common/noise.glsl"
 #include "water_lily/geometry.glsl"
 #include "water_lily/look.glsl"
@@ -335,6 +336,21 @@ vec3 sceneRadiance(Ray ray, LilyUniforms u, inout RayStats stats) {
     if (t == NO_HIT) return vec3(HIT_ID_NONE);
     return vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN, true).flower >= 0 ? HIT_ID_FLOWER
                                                                       : HIT_ID_LEAF);
+  }
+  if (u.surface != SURFACE_COLOUR) {  // the depth and normal passes: a lily, a pad or the water
+    if (t != NO_HIT) {
+      precise vec3 p = ro + rd * t;
+      precise vec3 n = calcNormal(p, normalEps(ray.pixel_angle, t, u), true, u, stats);
+      precise vec3 r_ = surfaceOutput(u.surface, t, n);
+      return r_;
+    }
+    if (water) {
+      precise vec3 w = ro + rd * t_water;
+      precise vec3 r_ = surfaceOutput(u.surface, t_water, waterNormal(w.x, w.z, t_water, u));
+      return r_;
+    }
+    precise vec3 r_ = noSurface(u.surface);
+    return r_;
   }
   precise vec3 col;
   precise float dist;

@@ -141,6 +141,46 @@ TEST(CompositingPasses, DepthAndNormalOfTheFloorAndTheObject) {
   EXPECT_GT(sky, 100);
 }
 
+// The lanterns' lake is nearly level (its waves are small against their length): its normals point
+// up, every normal is unit length and faces the camera (but at a few silhouette pixels, where a
+// finite-difference normal of a grazing hit may lean away), and the sky has no surface.
+TEST(CompositingPasses, DepthAndNormalOfTheLakeAndTheLanterns) {
+  const Timeline tl =
+      small_timeline("lantern_festival", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  const RenderedFrame f = pipe.render(5);
+  const std::vector<float>& z = pass_named(f, "depth").values;
+  const std::vector<float>& n = pass_named(f, "normal").values;
+  const std::vector<float>& id = pass_named(f, "id").values;
+  int lake = 0, lanterns = 0, sky = 0, leaning_away = 0;
+  for (int y = 0; y < 27; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const size_t i = size_t(y) * 48 + x;
+      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 dir = primary_ray_dir(f.ctx.camera, x + 0.5f, y + 0.5f, 48, 27);
+      if (id[i] == 0.0f) {
+        EXPECT_EQ(z[i], 1e10f);
+        EXPECT_EQ(normal, glm::vec3(0.0f));
+        ++sky;
+        continue;
+      }
+      EXPECT_NEAR(glm::length(normal), 1.0f, 1e-5f) << x << ", " << y;
+      leaning_away += glm::dot(normal, dir) >= 0.0f;
+      EXPECT_GT(z[i], 0.0f);
+      EXPECT_LT(z[i], 1e4f);
+      if (id[i] == 2.0f) {
+        EXPECT_GT(normal.y, 0.9f) << x << ", " << y;
+        ++lake;
+      } else {
+        ++lanterns;
+      }
+    }
+  EXPECT_GT(lake, 100);
+  EXPECT_GT(lanterns, 10);
+  EXPECT_GT(sky, 100);
+  EXPECT_LE(leaning_away * 50, lake + lanterns);  // at most 2%
+}
+
 // An adaptive frame of a plan of several passes (the museum) and of one ray pass (the lanterns):
 // the samples pass is the backend's count, and the picture is the one rendered without passes.
 TEST(CompositingPasses, SamplesAreTheBackendsCountsAndPassesChangeNoPixel) {

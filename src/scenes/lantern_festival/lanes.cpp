@@ -2,6 +2,7 @@
 // the water normal, the reflection and its march run in lanes; shading runs per lane with the
 // scalar functions. Every lane gets radiance()'s bits and stats
 // (tests/scenes/packet_path_test.cpp).
+#include "scenes/common/surface_output.h"
 #include "scenes/lantern_festival/march_lanes.h"
 #include "scenes/lantern_festival/scene.h"
 
@@ -76,6 +77,19 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
     normal_lanes =
         lanternNormal_lanes(field_.grid, lantern.cell, on_lantern, eye + rays.dir * lantern.t,
                             normalEps_lanes(march_, lantern.t, rays.pixel_angle));
+  if (march_.surface != SURFACE_COLOUR) {  // the depth and normal passes
+    const M8 on_water = valid & water.hit & ~lantern.hit;
+    V3x8 water_normal(glm::vec3(0.0f));
+    if (any(on_water))
+      water_normal = waterNormal_lanes(field_.lake, rays.origin + rays.dir * water.t,
+                                       normalEps_lanes(march_, water.t, rays.pixel_angle));
+    for (int i = 0; i < rays.count; ++i)
+      out[i] = lane(on_lantern, i)
+                   ? surfaceOutput(march_.surface, lantern.t[i], normal_lanes.lane(i))
+               : lane(on_water, i) ? surfaceOutput(march_.surface, water.t[i], water_normal.lane(i))
+                                   : noSurface(march_.surface);
+    return;
+  }
 
   // bounceOffWater in lanes.
   const M8 bounce = valid & water.hit & ~lantern.hit;

@@ -78,6 +78,7 @@ SceneInfo lantern_festival_scene_info() {
   info.test_poses = lantern_festival::test_poses(info.default_camera);
   info.shader = "lantern_festival/lantern_festival.glsl";
   info.counts_sdf_evals = true;
+  info.draws_surfaces = true;
   info.make = [] { return std::unique_ptr<Scene>(new lantern_festival::LanternFestivalScene()); };
   return info;
 }

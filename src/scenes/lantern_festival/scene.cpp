@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <mutex>
 
+#include "scenes/common/surface_output.h"
 #include "scenes/common/texture_cache.h"
 #include "scenes/lantern_festival/generated_textures.h"
 
@@ -202,6 +203,17 @@ glm::vec3 LanternFestivalScene::radiance(const Ray& ray, RayStats& stats) const 
     lantern = marchLanterns(ray.origin, ray.dir, t_far, lim, stats);
   }
   if (march_.hit_mask) return hitMask(water, lantern);
+  if (march_.surface != SURFACE_COLOUR) {  // the depth and normal passes
+    if (lantern.hit)
+      return surfaceOutput(
+          march_.surface, lantern.t,
+          lanternHitNormal(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle));
+    if (water.hit)
+      return surfaceOutput(march_.surface, water.t,
+                           waterNormal(field_.lake, ray.origin + ray.dir * water.t,
+                                       normalEps(water.t, ray.pixel_angle)));
+    return noSurface(march_.surface);
+  }
   const glm::vec3 normal =
       lantern.hit ? lanternHitNormal(ray.origin, ray.dir, lantern, lantern.t, ray.pixel_angle)
                   : glm::vec3(0.0f);

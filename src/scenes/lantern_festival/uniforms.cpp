@@ -86,6 +86,7 @@ std::vector<ShaderUniform> LanternFestivalScene::shader_uniforms() const {
       .flag("reference_march", reference_march_)
       .flag("naive", march_.naive)
       .flag("hit_mask", march_.hit_mask)
+      .f("surface", float(march_.surface))
       .append_to(all);
   return all;
 }

@@ -1,6 +1,7 @@
 #include "scenes/water_lily/render.h"
 
 #include "scenes/common/relaxed_march.h"
+#include "scenes/common/surface_output.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/look.h"
 #include "scenes/water_lily/shadow.h"
@@ -351,6 +352,19 @@ PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyU
     ps.col = t == NO_HIT ? vec3(HIT_ID_NONE)
                          : vec3(mapNearest(ro + rd * t, u, BOUND_MARGIN).flower >= 0 ? HIT_ID_FLOWER
                                                                                      : HIT_ID_LEAF);
+    return ps;
+  }
+  if (u.surface != SURFACE_COLOUR) {  // the depth and normal passes: a lily, a pad or the water
+    if (t != NO_HIT) {
+      const vec3 p = ro + rd * t;
+      ps.col = surfaceOutput(u.surface, t,
+                             calcNormal(p, normalEps(ray.pixel_angle, t, u), true, u, stats));
+    } else if (s.water) {
+      const vec3 w = ro + rd * s.t_water;
+      ps.col = surfaceOutput(u.surface, s.t_water, waterNormal(w.x, w.z, s.t_water, u));
+    } else {
+      ps.col = noSurface(u.surface);
+    }
     return ps;
   }
   if (t != NO_HIT) {

@@ -48,7 +48,7 @@ struct LilyUniforms {
   float max_dist = 120.0f;
   bool naive = false;
   bool hit_mask = false;
-  int surface = 0;  // MarchSettings::surface (not drawn yet: the scene gives no depth pass)
+  int surface = 0;  // MarchSettings::surface: radiance = the hit's distance or normal
 };
 
 // Reads TIME, the parameters, the camera and the march settings from ctx.

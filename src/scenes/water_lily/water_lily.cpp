@@ -95,6 +95,7 @@ SceneInfo water_lily_scene_info() {
   info.default_camera = CameraPose{{0.2, 1.25, -1.6}, {0.4, 0.05, 4.0}, 45.0, 0.0};
   info.shader = "water_lily/water_lily.glsl";
   info.counts_sdf_evals = true;
+  info.draws_surfaces = true;
   info.make = [] { return std::unique_ptr<Scene>(new WaterLilyScene()); };
   return info;
 }
