@@ -181,6 +181,14 @@ TEST(CompositingPasses, DepthAndNormalOfTheLakeAndTheLanterns) {
   EXPECT_LE(leaning_away * 50, lake + lanterns);  // at most 2%
 }
 
+// The docs' example (docs/passes.png) asks for what its scene gives.
+TEST(CompositingPasses, TheDocsExampleLoads) {
+  const Timeline tl = load_timeline(
+      all_scenes(), std::string(SDFREEL_SOURCE_DIR) + "/examples/passes.toml", nullptr);
+  EXPECT_EQ(tl.frame_options.passes, (std::vector<std::string>{"depth", "normal", "id"}));
+  EXPECT_EQ(tl.frame_count(), 1);
+}
+
 // An adaptive frame of a plan of several passes (the museum) and of one ray pass (the lanterns):
 // the samples pass is the backend's count, and the picture is the one rendered without passes.
 TEST(CompositingPasses, SamplesAreTheBackendsCountsAndPassesChangeNoPixel) {
