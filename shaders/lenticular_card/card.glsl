@@ -1,6 +1,7 @@
 // The card on its stand: the twin of src/scenes/lenticular_card/card.cpp (same functions, same
 // order of operations). A change there must be mirrored here: tests/osmesa compares the backends'
 // frames bit for bit.
+#include "common/surface_output.glsl"
 #include "common/texture.glsl"
 #include "lenticular_card/optics.glsl"
 
@@ -12,6 +13,7 @@ struct CardUniforms {
   float gloss, ridge_noise;
   float lenses, views, view_height;
   int hit_mask;  // MarchSettings::hit_mask (0 or 1)
+  int surface;   // MarchSettings::surface (common/surface_output.glsl)
   float hit_id_base;  // added to the ids
 };
 uniform CardUniforms u_card;
@@ -145,6 +147,11 @@ bool shadeCard(Ray ray, out vec3 colour, out float t) {
   int axis = on_card ? a_card : a_base;
   precise vec3 n = vec3(0.0);
   n[axis] = d[axis] < 0.0 ? 1.0 : -1.0;
+  if (u_card.surface != SURFACE_COLOUR) {  // the local axis's normal in the world
+    mat4 m = u_card.world_to_local;
+    colour = surfaceOutput(u_card.surface, t, n[axis] * vec3(m[0][axis], m[1][axis], m[2][axis]));
+    return true;
+  }
   if (u_card.hit_mask != 0) {
     colour = vec3(u_card.hit_id_base + (on_card ? HIT_ID_CARD : HIT_ID_STAND));
   } else if (!on_card) {

@@ -1,9 +1,11 @@
 // lenticular_card's first pass, the backdrop: the twin of src/scenes/lenticular_card/
 // backdrop.cpp. The card itself is the second pass (card_pass.glsl).
 #include "common/sample_loop.glsl"
+#include "common/surface_output.glsl"
 
 uniform vec3 u_backdrop_light;
 uniform int u_backdrop_hit_mask;  // MarchSettings::hit_mask: nothing marched here, id 0
+uniform int u_backdrop_surface;   // MarchSettings::surface: the floor, nothing above the horizon
 
 const vec3 FLOOR = vec3(0.30, 0.27, 0.24), WALL_LOW = vec3(0.06, 0.06, 0.07);
 const vec3 WALL_HIGH = vec3(0.015, 0.018, 0.025);
@@ -13,6 +15,11 @@ const float SHADOW_DEPTH = 0.55;
 
 vec3 radiance(Ray ray, inout RayStats stats) {
   if (u_backdrop_hit_mask != 0) return vec3(0.0);
+  if (u_backdrop_surface != SURFACE_COLOUR) {
+    if (!(ray.dir.y < 0.0) || !(ray.origin.y > 0.0)) return noSurface(u_backdrop_surface);
+    precise float t = -ray.origin.y / ray.dir.y;
+    return surfaceOutput(u_backdrop_surface, t, vec3(0.0, 1.0, 0.0));
+  }
   precise vec3 wall = dm_mix(WALL_LOW, WALL_HIGH, dm_smoothstep(-0.1, 0.6, ray.dir.y));
   if (!(ray.dir.y < 0.0) || !(ray.origin.y > 0.0)) return wall;
   precise float t = -ray.origin.y / ray.dir.y;

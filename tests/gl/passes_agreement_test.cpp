@@ -28,7 +28,8 @@ Timeline passes_timeline(const std::string& scene, const std::string& passes) {
 }
 
 TEST(PassesAgreement, BothBackendsGiveTheSamePasses) {
-  for (const std::string scene : {"sdf_morph", "light_beams", "lantern_festival", "water_lily"}) {
+  for (const std::string scene :
+       {"sdf_morph", "light_beams", "lantern_festival", "water_lily", "lenticular_card"}) {
     std::string names;
     for (const std::string& p : scene_passes(*find_scene(scene)))
       names += (names.empty() ? "\"" : ", \"") + p + "\"";

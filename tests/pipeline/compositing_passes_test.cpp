@@ -181,6 +181,41 @@ TEST(CompositingPasses, DepthAndNormalOfTheLakeAndTheLanterns) {
   EXPECT_LE(leaning_away * 50, lake + lanterns);  // at most 2%
 }
 
+// The lenticular card's boxes meet rays analytically: every face seen faces the camera, with a
+// unit normal of the card's frame (level, or straight up); its floor is the plane y = 0.
+TEST(CompositingPasses, DepthAndNormalOfTheCardAndItsFloor) {
+  const Timeline tl =
+      small_timeline("lenticular_card", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  const RenderedFrame f = pipe.render(5);
+  const std::vector<float>& z = pass_named(f, "depth").values;
+  const std::vector<float>& n = pass_named(f, "normal").values;
+  const std::vector<float>& id = pass_named(f, "id").values;
+  const CameraBasis& cam = f.ctx.camera;
+  int floor = 0, card = 0;
+  for (int y = 0; y < 27; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const size_t i = size_t(y) * 48 + x;
+      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 dir = primary_ray_dir(cam, x + 0.5f, y + 0.5f, 48, 27);
+      if (id[i] == 0.0f && z[i] < 1e10f) {
+        EXPECT_EQ(normal, glm::vec3(0.0f, 1.0f, 0.0f));
+        const float t = -cam.origin.y / dir.y;
+        EXPECT_NEAR(z[i], t * glm::dot(dir, cam.forward), 1e-5f * z[i]) << x << ", " << y;
+        ++floor;
+      } else if (id[i] != 0.0f) {
+        EXPECT_NEAR(glm::length(normal), 1.0f, 1e-6f);
+        EXPECT_TRUE(normal.y == 0.0f || std::fabs(normal.y) == 1.0f) << normal.y;
+        EXPECT_LT(glm::dot(normal, dir), 0.0f) << x << ", " << y;
+        EXPECT_GT(z[i], 0.5f);
+        EXPECT_LT(z[i], 10.0f);
+        card += id[i] == 1.0f;
+      }
+    }
+  EXPECT_GT(floor, 50);
+  EXPECT_GT(card, 50);
+}
+
 // The docs' example (docs/passes.png) asks for what its scene gives.
 TEST(CompositingPasses, TheDocsExampleLoads) {
   const Timeline tl = load_timeline(

@@ -1,5 +1,6 @@
 #include "scenes/lenticular_card/backdrop.h"
 
+#include "scenes/common/surface_output.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::lenticular_card {
@@ -15,10 +16,17 @@ V3x8 mix3(const V3x8& x, const V3x8& y, F8 a) {
   return x * (1.0f - a) + y * a;
 }
 
+// The depth and normal passes: the floor where the ray meets it, nothing above the horizon.
+glm::vec3 floorSurface(const Ray& ray, int surface) {
+  if (!(ray.dir.y < 0.0f) || !(ray.origin.y > 0.0f)) return noSurface(surface);
+  return surfaceOutput(surface, -ray.origin.y / ray.dir.y, glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
 }  // namespace
 
-glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask) {
+glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask, int surface) {
   if (hit_mask) return glm::vec3(0.0f);
+  if (surface != SURFACE_COLOUR) return floorSurface(ray, surface);
   const glm::vec3 wall = dm::mix(WALL_LOW, WALL_HIGH, dm::smoothstep(-0.1f, 0.6f, ray.dir.y));
   if (!(ray.dir.y < 0.0f) || !(ray.origin.y > 0.0f)) return wall;
   const float t = -ray.origin.y / ray.dir.y;
@@ -29,8 +37,13 @@ glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask) {
   return dm::mix(lit, wall, dm::smoothstep(0.0f, FLOOR_FADE, r));
 }
 
-V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask) {
+V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask, int surface) {
   if (hit_mask) return V3x8(glm::vec3(0.0f));
+  if (surface != SURFACE_COLOUR) {
+    V3x8 out(glm::vec3(0.0f));
+    for (int i = 0; i < LANES; ++i) out.set_lane(i, floorSurface(rays.ray(i), surface));
+    return out;
+  }
   const V3x8& d = rays.dir;
   const glm::vec3& o = rays.origin;
   const F8 a = dm::smoothstep(-0.1f, 0.6f, d.y);

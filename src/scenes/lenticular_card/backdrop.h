@@ -8,9 +8,10 @@
 
 namespace sdfreel::lenticular_card {
 
-// hit_mask: 0 (nothing marched here), as MarchSettings::hit_mask asks.
-glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask);
+// hit_mask: 0 (nothing marched here), as MarchSettings::hit_mask asks; surface: the floor's
+// distance or normal, or no surface beyond it, as MarchSettings::surface asks.
+glm::vec3 backdrop(const Ray& ray, const glm::vec3& light, bool hit_mask, int surface);
 // The same for a packet of eight rays from one origin, each lane the scalar function's bits.
-V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask);
+V3x8 backdrop(const RayPacket& rays, const glm::vec3& light, bool hit_mask, int surface);
 
 }  // namespace sdfreel::lenticular_card

@@ -1,5 +1,6 @@
 #include "scenes/lenticular_card/card.h"
 
+#include "scenes/common/surface_output.h"
 #include "scenes/lenticular_card/optics.h"
 #include "sdf/det_math.h"
 #include "sdf/lanes.h"
@@ -158,6 +159,11 @@ bool shadeCard(const Ray& ray, const CardUniforms& u, const CardTextures& tex, v
   const int axis = on_card ? a_card : a_base;
   vec3 n(0.0f);
   n[axis] = d[axis] < 0.0f ? 1.0f : -1.0f;
+  if (u.surface != SURFACE_COLOUR) {  // the local axis's normal in the world: a row of the inverse
+    const glm::mat4& m = u.world_to_local;
+    colour = surfaceOutput(u.surface, t, n[axis] * vec3(m[0][axis], m[1][axis], m[2][axis]));
+    return true;
+  }
   if (u.hit_mask) {
     colour = vec3(u.hit_id_base + (on_card ? HIT_ID_CARD : HIT_ID_STAND));
   } else if (!on_card) {

@@ -25,6 +25,7 @@ struct CardUniforms {
   float gloss = 1.0f, ridge_noise = 0.1f;
   int lenses = 64, views = 16, view_height = 48;  // the print's layout (textures.h)
   bool hit_mask = false;     // MarchSettings::hit_mask: ids instead of colours (card 1, stand 2)
+  int surface = 0;           // MarchSettings::surface: the hit's distance or world normal
   float hit_id_base = 0.0f;  // added to those ids (a host scene keeps its own ids apart)
 };
 

@@ -52,6 +52,7 @@ std::vector<ShaderUniform> card_shader_uniforms(const CardUniforms& u) {
       .f("views", float(u.views))
       .f("view_height", float(u.view_height))
       .flag("hit_mask", u.hit_mask)
+      .f("surface", float(u.surface))
       .f("hit_id_base", u.hit_id_base);
   return list.uniforms();
 }
@@ -60,6 +61,7 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrint
                         const CardLook& look, const FrameContext& ctx) {
   CardUniforms u = card_uniforms(model, prints, look, ctx.scene_time);
   u.hit_mask = ctx.march.hit_mask;
+  u.surface = ctx.march.surface;
   const CameraModel cam =
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
   const glm::vec3 forward = ctx.camera.forward;

@@ -45,6 +45,7 @@ class LenticularCardScene : public Scene {
     model_ = glm::mat4(glm::rotate(glm::dmat4(1.0), yaw, glm::dvec3(0.0, 1.0, 0.0)));
     card_ = card_uniforms(model_, *prints_, look_, ctx.scene_time);
     card_.hit_mask = ctx.march.hit_mask;
+    card_.surface = ctx.march.surface;
   }
   glm::vec3 radiance(const Ray& ray, RayStats&) const override {
     // The plan's two passes in one: the card (nearer than anything of the backdrop) over it.
@@ -55,7 +56,7 @@ class LenticularCardScene : public Scene {
                                prints_->print_by_strip.get()},
                   colour, t))
       return colour;
-    return backdrop(ray, light_, card_.hit_mask);
+    return backdrop(ray, light_, card_.hit_mask, card_.surface);
   }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan;
@@ -63,12 +64,14 @@ class LenticularCardScene : public Scene {
     back.name = "backdrop";
     const glm::vec3 light = light_;
     const bool mask = card_.hit_mask;
-    back.scalar = [light, mask](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
-      colour = backdrop(ray, light, mask);
+    const int surface = card_.surface;
+    back.scalar = [light, mask, surface](const Ray& ray, glm::vec3& colour, float&, bool& keep,
+                                         RayStats&) {
+      colour = backdrop(ray, light, mask, surface);
       keep = true;
     };
-    back.packet = [light, mask](const RayPacket& rays, RayPassOutput& out, RayStats&) {
-      const V3x8 colour = backdrop(rays, light, mask);
+    back.packet = [light, mask, surface](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+      const V3x8 colour = backdrop(rays, light, mask, surface);
       for (int i = 0; i < rays.count; ++i) {
         out.colour[i] = colour.lane(i);
         out.keep[i] = true;
@@ -82,6 +85,7 @@ class LenticularCardScene : public Scene {
     return UniformList()
         .v3("u_backdrop_light", light_)
         .flag("u_backdrop_hit_mask", card_.hit_mask)
+        .f("u_backdrop_surface", float(card_.surface))
         .uniforms();
   }
   std::vector<ShaderTexture> shader_textures() const override {
@@ -132,6 +136,7 @@ SceneInfo lenticular_card_scene_info() {
   info.default_camera = CameraPose{{0.0, 0.42, 1.45}, {0.0, 0.3, 0.0}, 32.0, 0.0};
   info.test_poses = test_poses();
   info.shader = "lenticular_card/lenticular_card.glsl";
+  info.draws_surfaces = true;
   info.make = [] { return std::unique_ptr<Scene>(new LenticularCardScene()); };
   return info;
 }
