@@ -216,6 +216,34 @@ TEST(CompositingPasses, DepthAndNormalOfTheCardAndItsFloor) {
   EXPECT_GT(card, 50);
 }
 
+// The fur's room and case are axis-aligned boxes: their normals are exactly the axes; the furry
+// shapes (ids 1 to 3) have unit normals, and every surface lies in the room (depth 0.1 to 20 m).
+TEST(CompositingPasses, DepthAndNormalOfTheFurCase) {
+  const Timeline tl =
+      small_timeline("fur", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  const RenderedFrame f = pipe.render(6);
+  const std::vector<float>& z = pass_named(f, "depth").values;
+  const std::vector<float>& n = pass_named(f, "normal").values;
+  const std::vector<float>& id = pass_named(f, "id").values;
+  int boxes = 0, shapes = 0;
+  for (size_t i = 0; i < id.size(); ++i) {
+    const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+    if (z[i] == 1e10f) continue;
+    EXPECT_GT(z[i], 0.1f);
+    EXPECT_LT(z[i], 20.0f);
+    EXPECT_NEAR(glm::length(normal), 1.0f, 1e-5f);
+    if (id[i] == 0.0f) {
+      EXPECT_EQ((normal.x == 0.0f) + (normal.y == 0.0f) + (normal.z == 0.0f), 2) << i;
+      ++boxes;
+    } else {
+      ++shapes;
+    }
+  }
+  EXPECT_GT(boxes, 200);
+  EXPECT_GT(shapes, 20);
+}
+
 // The docs' example (docs/passes.png) asks for what its scene gives.
 TEST(CompositingPasses, TheDocsExampleLoads) {
   const Timeline tl = load_timeline(

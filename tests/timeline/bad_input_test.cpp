@@ -275,7 +275,7 @@ TEST_F(BadInput, CompositingPasses) {
   expect_error(video_with("[output]\nframes = [\"png\"]\npasses = [\"samples\"]"),
                "output.passes are channels of the EXR frames: add \"exr\" to output.frames", 5, 10);
   expect_error("[video]\nscene = \"fur\"\n[output]\npasses = [\"samples\", \"sdf_evals\"]\n",
-               "scene 'fur' gives no 'sdf_evals' pass (it gives samples and id)", 4, 22);
+               "scene 'fur' gives no 'sdf_evals' pass (it gives samples, id, depth and normal)", 4, 22);
   const Timeline tl = load_timeline(
       all_scenes(), write(video_with("[output]\npasses = [\"sdf_evals\", \"samples\"]")), nullptr);
   EXPECT_EQ(tl.frame_options.passes, (std::vector<std::string>{"sdf_evals", "samples"}));

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scenes/common/surface_output.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::fur {
@@ -43,6 +44,9 @@ MeshInstance box_instance(const glm::mat4& model, const glm::vec3& centre, const
 glm::vec4 shade_case(const CaseLook& look, const MeshFragment& f) {
   if (look.hit_mask) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   const glm::vec3 n = glm::normalize(f.world_normal);
+  if (look.surface != SURFACE_COLOUR)
+    return glm::vec4(surfaceOutput(look.surface, glm::length(f.world_position - look.eye), n),
+                     1.0f);
   const float lambert = dm::max(glm::dot(n, look.light_dir), 0.0f);
   float shadow = 1.0f;
   for (const glm::vec4& b : look.bodies) {

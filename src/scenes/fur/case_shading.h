@@ -14,6 +14,8 @@ struct CaseLook {
   glm::vec3 light_dir{0.0f, 1.0f, 0.0f}, light{1.0f}, ambient{0.0f};
   std::array<glm::vec4, BODY_COUNT> bodies{};  // world centre, footprint radius
   bool hit_mask = false;                       // draw hit id 0 instead
+  int surface = 0;  // MarchSettings::surface: draw the distance from `eye` or the normal
+  glm::vec3 eye{0.0f};
 };
 
 // A box from -1 to 1 on each axis with flat faces (24 vertices), for instancing.

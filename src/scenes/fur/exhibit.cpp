@@ -68,6 +68,8 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   look.tip = glm::vec3(fur.tip_color);
   look.light_dir = light.light_dir, look.light = light.light, look.ambient = light.ambient;
   if (p.hit_mask) look.hit_id = p.hit_id_base + float(int(body.shape) + 1);
+  look.surface = p.surface;
+  look.eye = p.eye;
   pass.vertex = "fur/shell.vert";
   pass.fragment = "fur/shell.glsl";
   pass.alpha_cutoff = 0.5f;
@@ -80,6 +82,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   pass.uniforms.push_back(vec3_uniform("u_fur_offset", m.offset));
   pass.uniforms.push_back({"u_fur_density", 1, {look.density}});
   pass.uniforms.push_back({"u_hit_id", 1, {look.hit_id}});
+  pass.uniforms.push_back({"u_surface", 1, {float(look.surface)}});
   pass.uniforms.push_back({"u_fur_thickness", 1, {look.thickness}});
   pass.uniforms.push_back(vec3_uniform("u_fur_base", look.base));
   pass.uniforms.push_back(vec3_uniform("u_fur_tip", look.tip));
@@ -104,6 +107,7 @@ MeshPass lit_boxes_pass(const std::string& name, std::vector<MeshInstance> boxes
   for (const glm::vec4& b : look.bodies) bodies.insert(bodies.end(), {b.x, b.y, b.z, b.w});
   pass.uniforms.push_back({"u_bodies", 4, bodies});
   pass.uniforms.push_back({"u_hit_mask", 1, {look.hit_mask ? 1.0f : 0.0f}});
+  pass.uniforms.push_back({"u_surface", 1, {float(look.surface)}});
   pass.shade = [look](const MeshFragment& f) { return shade_case(look, f); };
   return pass;
 }
@@ -119,6 +123,8 @@ CaseLook exhibit_light(const ExhibitParams& p) {
 CaseLook exhibit_look(const glm::mat4& model, const ExhibitParams& p, const ExhibitPose& pose) {
   CaseLook look = exhibit_light(p);
   look.hit_mask = p.hit_mask;
+  look.surface = p.surface;
+  look.eye = p.eye;
   const float world_scale = glm::length(glm::vec3(model[0]));
   for (int i = 0; i < BODY_COUNT; ++i) {
     const BodyPose& b = pose[size_t(i)];

@@ -28,6 +28,8 @@ struct ExhibitParams {
   double light_intensity = 1.6;         // the key light
   bool hit_mask = false;     // MarchSettings::hit_mask: colour = hit id (0, or 1 + shape index)
   float hit_id_base = 0.0f;  // added to the shapes' ids (a host scene keeps its own apart)
+  int surface = 0;           // MarchSettings::surface: the surface's distance or normal instead
+  glm::vec3 eye{0.0f};       // the camera's origin, which that distance is measured from
   static std::array<FurLook, BODY_COUNT> default_looks();
 };
 

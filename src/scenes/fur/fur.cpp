@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
+#include "scenes/common/surface_output.h"
 #include "scenes/fur/exhibit.h"
 #include "scenes/scene.h"
 
@@ -33,13 +34,17 @@ class FurScene : public Scene {
   void prepare(const FrameContext& ctx) override {
     params_ = fur::read_exhibit_params(ctx.params);
     params_.hit_mask = ctx.march.hit_mask;
+    params_.surface = ctx.march.surface;
+    params_.eye = ctx.camera.origin;
     pose_ = fur::exhibit_pose(params_.physics, ctx.scene_time);
   }
   glm::vec3 radiance(const Ray&, RayStats&) const override {
+    if (params_.surface != SURFACE_COLOUR) return noSurface(params_.surface);
     return params_.hit_mask ? glm::vec3(0.0f) : BACKGROUND;
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
-    return {{"u_hit_mask", 1, {params_.hit_mask ? 1.0f : 0.0f}}};
+    return {{"u_hit_mask", 1, {params_.hit_mask ? 1.0f : 0.0f}},
+            {"u_surface", 1, {float(params_.surface)}}};
   }
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan = Scene::frame_plan(ctx);  // the background
@@ -86,6 +91,7 @@ SceneInfo fur_scene_info() {
   info.default_camera = CameraPose{{0.0, 1.65, -2.3}, {0.0, 1.12, 0.0}, 38.0, 0.0};
   info.test_poses = test_poses();
   info.shader = "fur/fur.glsl";
+  info.draws_surfaces = true;
   info.make = [] { return std::unique_ptr<Scene>(new FurScene()); };
   return info;
 }

@@ -1,5 +1,6 @@
 #include "scenes/fur/shell_shading.h"
 
+#include "scenes/common/surface_output.h"
 #include "scenes/fur/strand_hash.h"
 #include "sdf/det_math.h"
 
@@ -36,6 +37,9 @@ glm::vec4 shade_shell(const ShellLook& look, const MeshFragment& f) {
   if (h > 0.0f && glm::length(local) > look.thickness * (rnd - h)) return glm::vec4(0.0f);
   if (look.hit_id >= 0.0f) return glm::vec4(glm::vec3(look.hit_id), 1.0f);
   const glm::vec3 n = glm::normalize(f.world_normal);
+  if (look.surface != SURFACE_COLOUR)
+    return glm::vec4(surfaceOutput(look.surface, glm::length(f.world_position - look.eye), n),
+                     1.0f);
   // The seed's half-Lambert: N.L clamped, then * 0.5 + 0.5, squared.
   float lit = dm::clamp(glm::dot(n, look.light_dir), 0.0f, 1.0f) * 0.5f + 0.5f;
   lit = lit * lit;

@@ -20,6 +20,8 @@ struct ShellLook {
   glm::vec3 base{0.0f}, tip{0.0f};
   glm::vec3 light_dir{0.0f, 1.0f, 0.0f}, light{1.0f}, ambient{0.0f};
   float hit_id = -1.0f;  // >= 0: draw this id instead of the colour (MarchSettings::hit_mask)
+  int surface = 0;       // MarchSettings::surface: draw the distance from `eye` or the normal
+  glm::vec3 eye{0.0f};
 };
 
 // Instance data of shell i of n: (h, fake AO, physics weight k, i), constant per shell.
