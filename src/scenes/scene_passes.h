@@ -1,6 +1,7 @@
 #pragma once
 // The compositing passes (render/compositing_passes.h) a scene gives, for the timeline's check of
 // [output] passes, `sdfreel scenes` and the scene table.
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,13 @@ namespace sdfreel {
 // (SceneInfo::draws_surfaces, MarchSettings::surface). Inline: the
 // timeline library, which links no scene code, checks [output] passes with it.
 inline std::vector<std::string> scene_passes(const SceneInfo& scene) {
-  std::vector<std::string> passes = {"samples"};
-  if (scene.counts_sdf_evals) passes.push_back("sdf_evals");
-  if (scene.make) passes.push_back("id");
-  if (scene.draws_surfaces) {
-    passes.push_back("depth");
-    passes.push_back("normal");
-  }
+  static const char* const names[] = {"samples", "sdf_evals", "id", "depth", "normal"};
+  const bool given[] = {true, scene.counts_sdf_evals, bool(scene.make), scene.draws_surfaces,
+                        scene.draws_surfaces};
+  std::vector<std::string> passes;
+  passes.reserve(std::size(names));  // no growth: GCC 14 warns (falsely) of one in push_back
+  for (size_t i = 0; i < std::size(names); ++i)
+    if (given[i]) passes.emplace_back(names[i]);
   return passes;
 }
 

@@ -28,10 +28,29 @@ Timeline small_timeline(const std::string& scene, const std::string& sampling,
   return parse_timeline(all_scenes(), "passes.toml", text, nullptr, nullptr);
 }
 
-const PassImage& pass_named(const RenderedFrame& f, const std::string& name) {
+// By a plain string: a std::string temporary would make GCC 14 warn of a dangling reference.
+const PassImage& pass_named(const RenderedFrame& f, const char* name) {
   for (const PassImage& p : f.passes)
     if (p.name == name) return p;
-  throw std::runtime_error("no pass " + name);
+  throw std::runtime_error(std::string("no pass ") + name);
+}
+
+// A frame's depth, normal and id passes, rendered on the CPU at 48x27.
+struct SurfacePasses {
+  RenderedFrame f;
+  std::vector<float> z, n, id;  // n: three values a pixel
+  glm::vec3 normal(size_t i) const { return glm::vec3(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]); }
+};
+
+SurfacePasses surface_passes(const std::string& scene, const std::string& sampling, int frame) {
+  const Timeline tl = small_timeline(scene, sampling, "passes = [\"depth\", \"normal\", \"id\"]");
+  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
+  SurfacePasses s{pipe.render(frame), {}, {}, {}};
+  s.z = pass_named(s.f, "depth").values;
+  s.n = pass_named(s.f, "normal").values;
+  s.id = pass_named(s.f, "id").values;
+  EXPECT_EQ(pass_named(s.f, "normal").channels, (std::vector<std::string>{"N.X", "N.Y", "N.Z"}));
+  return s;
 }
 
 TEST(CompositingPasses, EvalsAddUpToTheFrameCountOnBothCpuPathsInEveryScene) {
@@ -106,20 +125,15 @@ TEST(CompositingPasses, IdIsTheSurfaceAtThePixelsCentre) {
 // is (0, 1, 0) and the depth the floor's distance from the camera's plane; the object's normals
 // are unit vectors and its depths nearer than the floor behind it; the sky is 1e10 and no normal.
 TEST(CompositingPasses, DepthAndNormalOfTheFloorAndTheObject) {
-  const Timeline tl =
-      small_timeline("sdf_morph", "samples = 2", "passes = [\"depth\", \"normal\", \"id\"]");
-  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
-  const RenderedFrame f = pipe.render(5);
-  const std::vector<float>& z = pass_named(f, "depth").values;
-  const std::vector<float>& n = pass_named(f, "normal").values;
-  const std::vector<float>& id = pass_named(f, "id").values;
-  EXPECT_EQ(pass_named(f, "normal").channels, (std::vector<std::string>{"N.X", "N.Y", "N.Z"}));
+  const SurfacePasses s = surface_passes("sdf_morph", "samples = 2", 5);
+  const std::vector<float>&z = s.z, &id = s.id;
+  const RenderedFrame& f = s.f;
   const CameraBasis& cam = f.ctx.camera;
   int floor = 0, object = 0, sky = 0;
   for (int y = 0; y < 27; ++y)
     for (int x = 0; x < 48; ++x) {
       const size_t i = size_t(y) * 48 + x;
-      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 normal = s.normal(i);
       const glm::vec3 dir = primary_ray_dir(cam, x + 0.5f, y + 0.5f, 48, 27);
       if (id[i] == 0.0f && normal == glm::vec3(0.0f, 1.0f, 0.0f)) {  // the floor
         const float t = -cam.origin.y / dir.y;
@@ -145,18 +159,14 @@ TEST(CompositingPasses, DepthAndNormalOfTheFloorAndTheObject) {
 // up, every normal is unit length and faces the camera (but at a few silhouette pixels, where a
 // finite-difference normal of a grazing hit may lean away), and the sky has no surface.
 TEST(CompositingPasses, DepthAndNormalOfTheLakeAndTheLanterns) {
-  const Timeline tl =
-      small_timeline("lantern_festival", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
-  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
-  const RenderedFrame f = pipe.render(5);
-  const std::vector<float>& z = pass_named(f, "depth").values;
-  const std::vector<float>& n = pass_named(f, "normal").values;
-  const std::vector<float>& id = pass_named(f, "id").values;
+  const SurfacePasses s = surface_passes("lantern_festival", "samples = 1", 5);
+  const std::vector<float>&z = s.z, &id = s.id;
+  const RenderedFrame& f = s.f;
   int lake = 0, lanterns = 0, sky = 0, leaning_away = 0;
   for (int y = 0; y < 27; ++y)
     for (int x = 0; x < 48; ++x) {
       const size_t i = size_t(y) * 48 + x;
-      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 normal = s.normal(i);
       const glm::vec3 dir = primary_ray_dir(f.ctx.camera, x + 0.5f, y + 0.5f, 48, 27);
       if (id[i] == 0.0f) {
         EXPECT_EQ(z[i], 1e10f);
@@ -184,19 +194,15 @@ TEST(CompositingPasses, DepthAndNormalOfTheLakeAndTheLanterns) {
 // The lenticular card's boxes meet rays analytically: every face seen faces the camera, with a
 // unit normal of the card's frame (level, or straight up); its floor is the plane y = 0.
 TEST(CompositingPasses, DepthAndNormalOfTheCardAndItsFloor) {
-  const Timeline tl =
-      small_timeline("lenticular_card", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
-  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
-  const RenderedFrame f = pipe.render(5);
-  const std::vector<float>& z = pass_named(f, "depth").values;
-  const std::vector<float>& n = pass_named(f, "normal").values;
-  const std::vector<float>& id = pass_named(f, "id").values;
+  const SurfacePasses s = surface_passes("lenticular_card", "samples = 1", 5);
+  const std::vector<float>&z = s.z, &id = s.id;
+  const RenderedFrame& f = s.f;
   const CameraBasis& cam = f.ctx.camera;
   int floor = 0, card = 0;
   for (int y = 0; y < 27; ++y)
     for (int x = 0; x < 48; ++x) {
       const size_t i = size_t(y) * 48 + x;
-      const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+      const glm::vec3 normal = s.normal(i);
       const glm::vec3 dir = primary_ray_dir(cam, x + 0.5f, y + 0.5f, 48, 27);
       if (id[i] == 0.0f && z[i] < 1e10f) {
         EXPECT_EQ(normal, glm::vec3(0.0f, 1.0f, 0.0f));
@@ -219,16 +225,11 @@ TEST(CompositingPasses, DepthAndNormalOfTheCardAndItsFloor) {
 // The fur's room and case are axis-aligned boxes: their normals are exactly the axes; the furry
 // shapes (ids 1 to 3) have unit normals, and every surface lies in the room (depth 0.1 to 20 m).
 TEST(CompositingPasses, DepthAndNormalOfTheFurCase) {
-  const Timeline tl =
-      small_timeline("fur", "samples = 1", "passes = [\"depth\", \"normal\", \"id\"]");
-  FramePipeline pipe(tl, std::make_unique<CpuBackend>(2));
-  const RenderedFrame f = pipe.render(6);
-  const std::vector<float>& z = pass_named(f, "depth").values;
-  const std::vector<float>& n = pass_named(f, "normal").values;
-  const std::vector<float>& id = pass_named(f, "id").values;
+  const SurfacePasses s = surface_passes("fur", "samples = 1", 6);
+  const std::vector<float>&z = s.z, &id = s.id;
   int boxes = 0, shapes = 0;
   for (size_t i = 0; i < id.size(); ++i) {
-    const glm::vec3 normal(n[i * 3], n[i * 3 + 1], n[i * 3 + 2]);
+    const glm::vec3 normal = s.normal(i);
     if (z[i] == 1e10f) continue;
     EXPECT_GT(z[i], 0.1f);
     EXPECT_LT(z[i], 20.0f);
