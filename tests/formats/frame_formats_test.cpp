@@ -214,6 +214,44 @@ TEST(FrameFormats, AnimatedWebpKeepsThePrimaries) {
   }
 }
 
+// The compositing passes as OpenImageIO (a reader of our EXRs that is not ours) sees them: the
+// channels named as compositors expect, and values that make sense of sdf_morph's frame: one
+// sample, ids 0 to 2, unit normals where there is a surface, none (and Z = 1e10) where there is
+// not, and the floor's normal straight up.
+TEST(FrameFormats, ExrPassesReadBackWithOpenImageIO) {
+  const std::string dir = scratch_dir("formats-passes");
+  write_file(dir + "/t.toml", timeline(1, "\"exr\"",
+                                       "passes = [\"samples\", \"sdf_evals\", \"id\", \"depth\", "
+                                       "\"normal\"]\n"));
+  const RunResult r = run_sdfreel("render t.toml --no-video", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Read exr = read(dir + "/out/frames/00000.exr");
+  const std::vector<std::string> names = {"R",  "G", "B",   "A",   "samples", "sdf_evals",
+                                          "id", "Z", "N.X", "N.Y", "N.Z"};
+  std::vector<int> at;
+  for (const std::string& name : names) {
+    at.push_back(exr.spec.channelindex(name));
+    ASSERT_GE(at.back(), 0) << "no channel " << name;
+  }
+  const int nc = exr.spec.nchannels;
+  int floor = 0, surfaces = 0;
+  for (size_t p = 0; p < size_t(exr.spec.width) * exr.spec.height; ++p) {
+    auto v = [&](int k) { return exr.values[p * nc + size_t(at[size_t(k)])]; };
+    ASSERT_EQ(v(4), 1.0f);  // samples = 1
+    ASSERT_TRUE(v(6) == 0.0f || v(6) == 1.0f || v(6) == 2.0f) << v(6);
+    const float length = std::sqrt(v(8) * v(8) + v(9) * v(9) + v(10) * v(10));
+    if (v(7) == 1e10f) {
+      ASSERT_EQ(length, 0.0f);
+      continue;
+    }
+    ASSERT_NEAR(length, 1.0f, 1e-5f);
+    ++surfaces;
+    floor += v(6) == 0.0f && v(9) == 1.0f;
+  }
+  EXPECT_GT(surfaces, 64 * 36 / 3);
+  EXPECT_GT(floor, 64 * 36 / 10);
+}
+
 TEST(FrameFormats, AnExtensionNoWriterTakesIsExitTwoAtItsPlace) {
   const std::string dir = scratch_dir("formats-bad");
   write_file(dir + "/t.toml", timeline(1, "\"png\", \"xyz\""));
