@@ -6,6 +6,7 @@
 #include "scenes/registry.h"
 #include "scenes/scene_passes.h"
 #include "timeline/suggest.h"
+#include "timeline/toml_reader.h"
 
 namespace sdfreel {
 
@@ -40,9 +41,7 @@ int run_scenes(const std::string& name) {
   std::printf("default camera: position = [%g, %g, %g], target = [%g, %g, %g], fov = %g\n",
               c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z,
               c.fov_deg);
-  std::string passes;
-  for (const std::string& p : scene_passes(*s)) passes += (passes.empty() ? "" : ", ") + p;
-  std::printf("compositing passes ([output] passes): %s\n\n", passes.c_str());
+  std::printf("compositing passes ([output] passes): %s\n\n", join(scene_passes(*s), ", ").c_str());
   std::printf("%-24s %-20s %-18s %s\n", "parameter", "default", "range", "meaning");
   for (const ParamSpec& p : s->params) {
     char range[64];

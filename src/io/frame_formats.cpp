@@ -97,14 +97,6 @@ FrameFileOptions frame_options_from_values(const std::map<std::string, std::stri
   number("exr_bits", options.exr_bits);
   if (auto it = values.find("exr_compression"); it != values.end())
     options.exr_compression = it->second;
-  if (auto it = values.find("passes"); it != values.end()) {
-    std::string rest = it->second;
-    for (size_t comma; !rest.empty();
-         rest = comma == std::string::npos ? "" : rest.substr(comma + 1)) {
-      comma = rest.find(',');
-      options.passes.push_back(rest.substr(0, comma));
-    }
-  }
   return options;
 }
 

@@ -41,7 +41,8 @@ std::vector<std::string> timeline_frame_files(const Timeline& tl);
 // default EXR and PNG.
 std::map<std::string, std::string> frame_option_values(const std::vector<std::string>& exts,
                                                        const FrameFileOptions& options);
-// Reads them back (keys it does not know are ignored; missing ones keep their defaults).
+// Reads back what shapes how a kept file reads (keys it does not know, and "passes", which only
+// add channels a reader skips, are ignored; missing ones keep their defaults).
 FrameFileOptions frame_options_from_values(const std::map<std::string, std::string>& values);
 
 // Writes one frame file atomically (temporary beside it, then rename), from the linear or the

@@ -34,10 +34,10 @@ int one_of(const TomlReader& r, const toml::node& n, const std::string& name,
            const std::vector<int>& allowed) {
   const int64_t v = r.integer(n, name);
   if (std::find(allowed.begin(), allowed.end(), v) != allowed.end()) return int(v);
-  std::string list;
-  for (size_t i = 0; i < allowed.size(); ++i)
-    list += (i ? (i + 1 == allowed.size() ? " or " : ", ") : "") + std::to_string(allowed[i]);
-  r.fail(n, name + " = " + std::to_string(v) + ": use " + list);
+  std::vector<std::string> names;
+  names.reserve(allowed.size());  // no growth: GCC 14 warns (falsely) of one in push_back
+  for (int a : allowed) names.push_back(std::to_string(a));
+  r.fail(n, name + " = " + std::to_string(v) + ": use " + join(names, " or "));
 }
 
 }  // namespace

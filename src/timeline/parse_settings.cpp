@@ -190,12 +190,9 @@ void parse_output(const TomlReader& r, const toml::table& root, const SceneInfo&
   if (const toml::node* n = output->get("codec")) {
     const std::vector<std::string> codecs = video_codec_names();
     std::string c = r.string(*n, "output.codec");
-    if (std::find(codecs.begin(), codecs.end(), c) == codecs.end()) {
-      std::string list;
-      for (size_t i = 0; i < codecs.size(); ++i)
-        list += (i ? (i + 1 == codecs.size() ? " or " : ", ") : "") + codecs[i];
-      r.fail(*n, "unknown codec '" + c + "': use " + list + did_you_mean(c, codecs));
-    }
+    if (std::find(codecs.begin(), codecs.end(), c) == codecs.end())
+      r.fail(*n,
+             "unknown codec '" + c + "': use " + join(codecs, " or ") + did_you_mean(c, codecs));
     tl.codec = c;
   }
   if (const toml::node* n = output->get("crf")) tl.crf = int(r.integer_in(*n, "output.crf", 0, 51));
