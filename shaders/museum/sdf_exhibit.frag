@@ -2,6 +2,7 @@
 // front faces culled; the twin of shade_exhibit() in src/scenes/museum/sdf_exhibit.cpp (see there).
 // Writes the hit's window depth to gl_FragDepth, so the depth test composites it with the hall.
 #include "common/camera.glsl"
+#include "common/surface_output.glsl"
 #include "sdf_morph/geometry.glsl"
 #include "sdf_morph/shading.glsl"
 #include "museum/lighting.glsl"
@@ -60,11 +61,15 @@ void main() {
   precise vec3 n = object_normal(p);
   precise vec3 world_hit = u_camera_origin + dir * (t * u_exhibit_scale);
   precise vec3 world_n = to_world(n);
+  precise float view_depth = dm_dot(world_hit - u_camera_origin, u_camera_forward);
+  gl_FragDepth = window_depth(view_depth);
+  if (u_morph.surface != SURFACE_COLOUR) {  // the hit's distance from the eye or its normal
+    frag_color = vec4(surfaceOutput(u_morph.surface, t * u_exhibit_scale, world_n), 1.0);
+    return;
+  }
   precise vec3 r = to_world(dl - 2.0 * dm_dot(n, dl) * n);
   precise float ndl = dm_dot(world_n, TO_SUN);
   precise float shadow = ndl > 0.0 ? sun_visibility(world_hit, world_n, ndl) : 0.0;
   frag_color = vec4(shadeObjectLit(n, dl, sample_probe(r), shadow, 1.0, u_morph), 1.0);
   if (u_morph.hit_mask != 0) frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
-  precise float view_depth = dm_dot(world_hit - u_camera_origin, u_camera_forward);
-  gl_FragDepth = window_depth(view_depth);
 }

@@ -245,6 +245,48 @@ TEST(CompositingPasses, DepthAndNormalOfTheFurCase) {
   EXPECT_GT(shapes, 20);
 }
 
+// The museum's hall is axis-aligned boxes: its normals are exactly the axes, and where it shows its
+// floor (y = 0) the depth is the analytic plane's; exhibit 1 (marched) and the card have unit
+// normals facing the camera; the window's sky is no surface.
+TEST(CompositingPasses, DepthAndNormalOfTheMuseumsHallAndExhibits) {
+  const SurfacePasses s = surface_passes("museum", "samples = 1", 6);
+  const std::vector<float>&z = s.z, &id = s.id;
+  const CameraBasis& cam = s.f.ctx.camera;
+  int floor = 0, hall = 0, exhibits = 0, sky = 0;
+  for (int y = 0; y < 27; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const size_t i = size_t(y) * 48 + x;
+      const glm::vec3 normal = s.normal(i);
+      const glm::vec3 dir = primary_ray_dir(cam, x + 0.5f, y + 0.5f, 48, 27);
+      if (z[i] == 1e10f) {
+        EXPECT_EQ(normal, glm::vec3(0.0f));
+        ++sky;
+        continue;
+      }
+      EXPECT_GT(z[i], 0.05f);
+      EXPECT_LT(z[i], 30.0f);
+      EXPECT_NEAR(glm::length(normal), 1.0f, 1e-5f) << x << ", " << y;
+      if (id[i] == 2.0f) {
+        EXPECT_EQ((normal.x == 0.0f) + (normal.y == 0.0f) + (normal.z == 0.0f), 2)
+            << x << ", " << y;
+        const float floor_t = -cam.origin.y / dir.y;
+        const float hit_y = cam.origin.y + dir.y * (z[i] / glm::dot(dir, cam.forward));
+        if (normal.y == 1.0f && std::fabs(hit_y) < 0.01f) {
+          EXPECT_NEAR(z[i], floor_t * glm::dot(dir, cam.forward), 1e-3f * z[i]) << x << ", " << y;
+          ++floor;
+        }
+        ++hall;
+      } else if (id[i] == 1.0f || id[i] == 3.0f) {
+        EXPECT_LT(glm::dot(normal, dir), 0.1f) << x << ", " << y;
+        ++exhibits;
+      }
+    }
+  EXPECT_GT(floor, 50);
+  EXPECT_GT(hall, 400);
+  EXPECT_GT(exhibits, 3);
+  EXPECT_GT(sky, 3);  // the window
+}
+
 // The docs' example (docs/passes.png) asks for what its scene gives.
 TEST(CompositingPasses, TheDocsExampleLoads) {
   const Timeline tl = load_timeline(

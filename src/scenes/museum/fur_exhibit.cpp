@@ -26,6 +26,8 @@ ExhibitPasses fur_exhibit() {
     fur::ExhibitParams p = fur::read_exhibit_params(stage.frame.params, FUR_PARAM_PREFIX);
     p.hit_mask = stage.frame.march.hit_mask;
     p.hit_id_base = FUR_HIT_ID_BASE;
+    p.surface = stage.frame.march.surface;
+    p.eye = stage.frame.camera.origin;
     const size_t first = plan.passes.size();
     fur::add_exhibit_passes(plan, top * fur_case_pose(), p, stage.frame.scene_time);
     // The fur's passes draw into the hall's targets, not the frame's.

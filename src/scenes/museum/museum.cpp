@@ -31,6 +31,7 @@
 #include "io/cache_file.h"
 #include "render/camera_model.h"
 #include "scenes/common/param.h"
+#include "scenes/common/surface_output.h"
 #include "scenes/fur/exhibit_params.h"
 #include "scenes/museum/atmosphere.h"
 #include "scenes/museum/card_exhibit.h"
@@ -68,27 +69,33 @@ std::vector<ParamSpec> params() {
   return p;
 }
 
-RayPass sky_pass(bool ids) {
+// The sky in the frame's mode: its colour, its id (hit_mask) or no surface (surface passes).
+glm::vec3 sky_output(const glm::vec3& dir, bool ids, int surface) {
+  if (surface != SURFACE_COLOUR) return noSurface(surface);
+  return ids ? glm::vec3(HIT_ID_SKY) : sky(dir);
+}
+
+RayPass sky_pass(bool ids, int surface) {
   RayPass p;
   p.name = "sky";
   p.colour = HALL_TARGET;
   p.sdf_evals = "";
   p.shader = "museum/museum.glsl";
-  p.uniforms = {{"u_hit_mask", 1, {ids ? 1.0f : 0.0f}}};
-  p.scalar = [ids](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
-    colour = ids ? glm::vec3(HIT_ID_SKY) : sky(ray.dir);
+  p.uniforms = {{"u_hit_mask", 1, {ids ? 1.0f : 0.0f}}, {"u_surface", 1, {float(surface)}}};
+  p.scalar = [ids, surface](const Ray& ray, glm::vec3& colour, float&, bool& keep, RayStats&) {
+    colour = sky_output(ray.dir, ids, surface);
     keep = true;
   };
-  p.packet = [ids](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+  p.packet = [ids, surface](const RayPacket& rays, RayPassOutput& out, RayStats&) {
     for (int i = 0; i < rays.count; ++i) {
-      out.colour[i] = ids ? glm::vec3(HIT_ID_SKY) : sky(rays.dir.lane(i));
+      out.colour[i] = sky_output(rays.dir.lane(i), ids, surface);
       out.keep[i] = true;
     }
   };
   return p;
 }
 
-MeshPass hall_pass(const HallLight& light, bool ids) {
+MeshPass hall_pass(const HallLight& light, bool ids, int surface) {
   MeshPass p;
   p.name = "hall";
   p.mesh = unit_cube();
@@ -99,9 +106,14 @@ MeshPass hall_pass(const HallLight& light, bool ids) {
   p.fragment = "museum/hall.frag";
   p.uniforms = light_uniforms(light);
   p.uniforms.push_back({"u_hit_mask", 1, {ids ? 1.0f : 0.0f}});
+  p.uniforms.push_back({"u_surface", 1, {float(surface)}});
   p.inputs = {{SUN_MAP_TARGET, SUN_MAP_SAMPLER}};
-  p.shade = [light, ids](const MeshFragment& f) {
+  p.shade = [light, ids, surface](const MeshFragment& f) {
     if (ids) return glm::vec4(glm::vec3(HIT_ID_HALL), 1.0f);
+    if (surface != SURFACE_COLOUR)
+      return glm::vec4(surfaceOutput(surface, glm::length(f.world_position - light.eye),
+                                     glm::normalize(f.world_normal)),
+                       1.0f);
     const SunMap map{&(*f.inputs)[0], &sun_view()};
     return glm::vec4(hall_radiance(f.world_position, f.world_normal, glm::vec3(f.instance_data),
                                    f.instance_data.w, light, map),
@@ -146,14 +158,15 @@ class MuseumScene : public Scene {
         make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
     HallLight light{ctx.camera.origin, sun_occluders()};
     const bool ids = ctx.march.hit_mask;
-    plan.passes.push_back(sky_pass(ids));
-    plan.passes.push_back(hall_pass(light, ids));
+    const int surface = ctx.march.surface;
+    plan.passes.push_back(sky_pass(ids, surface));
+    plan.passes.push_back(hall_pass(light, ids, surface));
     const ExhibitStage stage{ctx, cam, light, HALL_TARGET, DEPTH_TARGET, probe_.get()};
     ExhibitPasses extra[PLINTH_COUNT];
     extra[CARD_PLINTH] = card_exhibit(*prints_);
     extra[FUR_PLINTH] = fur_exhibit();
     add_exhibit_passes(plan, stage, extra);
-    if (ids) {
+    if (ids || surface != SURFACE_COLOUR) {  // ids, depths and normals: no air in front
       plan.passes.push_back(copy_pass(HALL_TARGET, COLOUR_TARGET));
       return plan;
     }
@@ -202,6 +215,7 @@ SceneInfo museum_scene_info() {
   info.test_poses = museum::test_poses();
   info.shader = "museum/museum.glsl";
   info.make = [] { return std::unique_ptr<Scene>(new museum::MuseumScene()); };
+  info.draws_surfaces = true;
   return info;
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "render/quality.h"
+#include "scenes/common/surface_output.h"
 #include "scenes/museum/meshes.h"
 #include "scenes/museum/sun_shadow.h"
 #include "scenes/sdf_morph/geometry.h"
@@ -80,14 +81,18 @@ bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, const ImageRG
   const vec3 n = object_normal(p, f.morph);
   const vec3 world_hit = f.eye + dir * (t * f.scale);
   const vec3 world_n = f.to_world * n;
+  const float view_depth = glm::dot(world_hit - f.eye, f.forward);
+  depth = f.depth_scale * (1.0f - f.near_plane / view_depth);
+  if (f.morph.surface != SURFACE_COLOUR) {  // the hit's distance from the eye or its normal
+    colour = glm::vec4(surfaceOutput(f.morph.surface, t * f.scale, world_n), 1.0f);
+    return true;
+  }
   const vec3 r = f.to_world * sdf_morph::reflectDir(dl, n);
   const float ndl = glm::dot(world_n, TO_SUN);
   const float shadow =
       ndl > 0.0f ? sun_visibility(world_hit, world_n, ndl, f.light, {&sun_map, &sun_view()}) : 0.0f;
   const vec3 c = sdf_morph::shadeObjectLit(n, dl, sample_probe(*f.probe, r), shadow, 1.0f, f.morph);
   colour = glm::vec4(f.morph.hit_mask ? vec3(sdf_morph::HIT_ID_OBJECT) : c, 1.0f);
-  const float view_depth = glm::dot(world_hit - f.eye, f.forward);
-  depth = f.depth_scale * (1.0f - f.near_plane / view_depth);
   return true;
 }
 
