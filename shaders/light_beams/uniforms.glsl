@@ -36,3 +36,7 @@ struct BeamsUniforms {
 };
 
 uniform BeamsUniforms u_beams;
+
+// Whether shape j stands in the light of the others (castsShadow in uniforms.h): the occluder and
+// every light that shines; a beam flickered fully out is gone.
+bool castsShadow(int j) { return j == OCCLUDER || u_beams.gain[j] > 0.0; }

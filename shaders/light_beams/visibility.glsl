@@ -83,7 +83,7 @@ float hiddenWidth(vec2 p, LightView lv, int light, int j) {
 float nearestDist(vec2 p, int skip, inout RayStats stats) {
   precise float d = FAR_AWAY;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == skip) continue;
+    if (j == skip || !castsShadow(j)) continue;
     stats.sdf_evals += 1u;
     d = dm_min(d, shapeSDF(p, u_beams.shapes[j]));
   }
@@ -112,7 +112,7 @@ float penumbraVisibility(vec2 p, int light, inout RayStats stats) {
   if (!(width > 0.0)) return 1.0;
   precise float vis = 1.0;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == light) continue;
+    if (j == light || !castsShadow(j)) continue;
     stats.sdf_evals += 1u;
     if (shapeSDF(p, u_beams.shapes[j]) <= 0.0) return 0.0;
     vis *= 1.0 - hiddenWidth(p, lv, light, j) / width;
@@ -129,7 +129,7 @@ float exactVisibility(vec2 p, int light, inout RayStats stats) {
   vec2 hidden[SHAPE_COUNT - 1 + MAX_CROSSINGS];
   int count = 0;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == light) continue;
+    if (j == light || !castsShadow(j)) continue;
     stats.sdf_evals += 1u;
     if (shapeSDF(p, u_beams.shapes[j]) <= 0.0) return 0.0;
     if (!mayBeInFront(p, light, j)) continue;

@@ -340,7 +340,7 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u,
   int n = 0;
   const LightCone8 cone = coneOf8(lv);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == light) continue;
+    if (j == light || !castsShadow(j, u)) continue;
     if (!any(alive)) break;  // every lane has its answer: no more counts, no more work
     stats.count_evals(alive);
     const M8 in = alive & (views[j].sdf <= 0.0f);
@@ -388,7 +388,7 @@ F8 visibility8(P8 p, int light, M8 active, bool exact, const BeamsUniforms& u,
 F8 nearestDist8(P8 p, int skip, M8 active, const BeamsUniforms& u, RayStats& stats) {
   F8 d = splat(1e30f);
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == skip) continue;
+    if (j == skip || !castsShadow(j, u)) continue;
     stats.count_evals(active);
     d = dm::min(d, shapeSDF8(p, u.shapes[j]));
   }

@@ -62,6 +62,13 @@ struct BeamsUniforms {
   glm::vec4 pair_line[SHAPE_COUNT * SHAPE_COUNT] = {};
 };
 
+// Whether shape j stands in the light of the others: the occluder, and every light that shines. A
+// beam flickered fully out (gain 0, flicker_depth 1) is gone from the frame, so it casts no hard
+// wall across the glows; a dimmed one still glows and still stands.
+inline bool castsShadow(int j, const BeamsUniforms& u) {
+  return j == OCCLUDER || u.gain[j] > 0.0f;
+}
+
 // Reads TIME, the parameters and the preset from ctx (ctx.params: this scene's parameters).
 BeamsUniforms make_beams_uniforms(const FrameContext& ctx);
 

@@ -101,7 +101,7 @@ float hiddenParts(vec2 p, const LightView& lv, int light, int j, const BeamsUnif
 float nearestDist(vec2 p, int skip, const BeamsUniforms& u, RayStats& stats) {
   float d = FAR_AWAY;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == skip) continue;
+    if (j == skip || !castsShadow(j, u)) continue;
     stats.sdf_evals += 1;
     d = dm::min(d, shapeSDF(p, u.shapes[j]));
   }
@@ -130,7 +130,7 @@ float penumbraVisibility(vec2 p, int light, const BeamsUniforms& u, RayStats& st
   if (!(width > 0.0f)) return 1.0f;
   float vis = 1.0f;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == light) continue;
+    if (j == light || !castsShadow(j, u)) continue;
     stats.sdf_evals += 1;
     // Inside another shape the seed's march stops at once: nothing of the light is seen.
     if (shapeSDF(p, u.shapes[j]) <= 0.0f) return 0.0f;
@@ -149,7 +149,7 @@ float exactVisibility(vec2 p, int light, const BeamsUniforms& u, RayStats& stats
   vec2 hidden[SHAPE_COUNT - 1 + MAX_CROSSINGS];
   int count = 0;
   for (int j = 0; j < SHAPE_COUNT; ++j) {
-    if (j == light) continue;
+    if (j == light || !castsShadow(j, u)) continue;
     stats.sdf_evals += 1;
     if (shapeSDF(p, u.shapes[j]) <= 0.0f) return 0.0f;
     hiddenParts(p, lv, light, j, u, hidden, count);
@@ -177,7 +177,7 @@ float lightVisibility(vec2 p, int light, float dist_to_light, const BeamsUniform
 float monteCarloVisibility(vec2 p, int light, const BeamsUniforms& u, int rays) {
   const Shape& l = u.shapes[light];
   for (int j = 0; j < SHAPE_COUNT; ++j)
-    if (j != light && shapeSDF(p, u.shapes[j]) <= 0.0f) return 0.0f;
+    if (j != light && castsShadow(j, u) && shapeSDF(p, u.shapes[j]) <= 0.0f) return 0.0f;
   const LightView lv = viewOf(p, l);
   int seen = 0;
   for (int k = 0; k < rays; ++k) {
@@ -187,7 +187,7 @@ float monteCarloVisibility(vec2 p, int light, const BeamsUniforms& u, int rays) 
     if (t_light == NO_HIT) continue;  // grazing the light's outline: counts as unseen
     bool blocked = false;
     for (int j = 0; j < SHAPE_COUNT && !blocked; ++j) {
-      if (j == light) continue;
+      if (j == light || !castsShadow(j, u)) continue;
       const float t = hitShape(p, dir, u.shapes[j]);
       blocked = t != NO_HIT && t < t_light;
     }

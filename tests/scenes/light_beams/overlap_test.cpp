@@ -52,8 +52,10 @@ void PrintTo(const Case& c, std::ostream* os) {
 
 BeamsUniforms scene_of(const Case& c) {
   BeamsUniforms u;
-  for (int i = 0; i < SHAPE_COUNT; ++i)  // the unused shapes far away, out of every span
+  for (int i = 0; i < SHAPE_COUNT; ++i) {  // the unused shapes far away, out of every span
     u.shapes[i] = Shape{SHAPE_CIRCLE, {1000.0f + 10.0f * float(i), 1000.0f}, {}, 0.1f};
+    u.gain[i] = 1.0f;  // all shining: every shape stands in the others' light (castsShadow)
+  }
   for (size_t i = 0; i < c.shapes.size(); ++i) u.shapes[i] = c.shapes[i];
   findCrossings(u);
   return u;

@@ -14,13 +14,14 @@ namespace {
 
 constexpr int MC_RAYS = 4096;
 
-// Every shape parked far away (off the picture, out of every light's span), gain 0.
+// Every shape parked far away (off the picture, out of every light's span), shining (gain 1), so
+// every one stands in the others' light (castsShadow).
 BeamsUniforms empty_scene() {
   BeamsUniforms u;
   for (int i = 0; i < SHAPE_COUNT; ++i) {
     u.shapes[i] = Shape{SHAPE_CIRCLE, {1000.0f + 10.0f * float(i), 1000.0f}, {}, 0.1f};
     u.color[i] = glm::vec3(1.0f);
-    u.gain[i] = 0.0f;
+    u.gain[i] = 1.0f;
     u.fades[i] = 0.0f;
   }
   return u;
@@ -149,6 +150,32 @@ TEST(LightBeamsVisibility, ShapesBehindTheLightHideNothing) {
   // From beyond the wall, the wall hides the light entirely.
   EXPECT_EQ(exactVisibility({6.0f, 0.0f}, 0, u, stats), 0.0f);
   EXPECT_EQ(seedShadow({6.0f, 0.0f}, 0, 3.5f, u, stats), 0.0f);
+}
+
+// A beam flickered fully out (gain 0) is gone: it hides no light, and inside it the others are
+// seen; dimmed (gain above 0) it still stands in their way. The occluder always does.
+TEST(LightBeamsVisibility, ABeamThatIsOutCastsNoShadow) {
+  BeamsUniforms u = empty_scene();
+  u.shapes[0] = Shape{SHAPE_CIRCLE, {2.0f, 0.0f}, {}, 0.5f};
+  u.shapes[FIRST_BEAM] = Shape{SHAPE_SEGMENT, {1.0f, -2.0f}, {1.0f, 2.0f}, 0.1f};  // between
+  findCrossings(u);
+  for (const float beam_gain : {0.0f, 0.3f}) {
+    u.gain[FIRST_BEAM] = beam_gain;
+    const float want = beam_gain > 0.0f ? 0.0f : 1.0f;
+    RayStats stats;
+    EXPECT_EQ(exactVisibility({0.0f, 0.0f}, 0, u, stats), want) << beam_gain;
+    EXPECT_EQ(penumbraVisibility({0.0f, 0.0f}, 0, u, stats), want) << beam_gain;
+    EXPECT_EQ(seedShadow({0.0f, 0.0f}, 0, 1.5f, u, stats), want) << beam_gain;
+    EXPECT_EQ(monteCarloVisibility({0.0f, 0.0f}, 0, u, 64), want) << beam_gain;
+    EXPECT_EQ(exactVisibility({1.0f, 0.0f}, 0, u, stats), want) << "inside the beam";
+  }
+  u.shapes[OCCLUDER] = u.shapes[FIRST_BEAM];
+  u.gain[FIRST_BEAM] = 0.0f;
+  u.gain[OCCLUDER] = 0.0f;  // the occluder is no light, and blocks all the same
+  findCrossings(u);
+  RayStats stats;
+  EXPECT_EQ(exactVisibility({0.0f, 0.0f}, 0, u, stats), 0.0f);
+  EXPECT_EQ(seedShadow({0.0f, 0.0f}, 0, 1.5f, u, stats), 0.0f);
 }
 
 TEST(LightBeamsVisibility, InsideAnotherShapeNothingIsSeen) {
