@@ -38,11 +38,11 @@ void main() {
   precise vec2 uv = vec2((float(p.x) + 0.5) / float(u_resolution.x),
                          (float(p.y) + 0.5) / float(u_resolution.y));
   precise vec2 delta = (uv - u_rays.light_uv) * (u_rays.density / float(u_rays.samples));
-  precise float c = occlusion_at(uv);
+  precise float c = occlusion_at(uv) * u_rays.weight;  // the seed's first tap: the pixel's own
   precise float jitter = hash_to_unit(hash2i(p.x, p.y, u_rays.jitter_seed));
   uv = uv - delta * jitter;
-  precise float decay_acc = 1.0;
-  for (int i = 0; i < u_rays.samples; ++i) {
+  precise float decay_acc = u_rays.decay;
+  for (int i = 1; i < u_rays.samples; ++i) {
     uv = uv - delta;
     if (outside(uv)) break;
     c = c + occlusion_at(uv) * decay_acc * u_rays.weight;

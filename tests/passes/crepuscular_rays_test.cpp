@@ -27,8 +27,8 @@ ImageRGBA render_rays(const CrepuscularRays& rays, bool pattern, float c, int w,
   return run_plan_cpu(plan, test::plan_context(w, h), CpuRunSettings{threads, tile, true}, stats);
 }
 
-// The march stays between the pixel and a light at the centre (density < N / (N + 1)), so every
-// pixel sums all N taps of a uniform c. The sum of N float terms rounds at most N half-ulps of its
+// The march stays between the pixel and a light at the centre (density 1: the last tap is short of
+// the light by 1 - jitter steps), so every pixel sums all N taps of a uniform c. The sum of N float terms rounds at most N half-ulps of its
 // value; dyadic parameters (second case) make every step exact.
 TEST(CrepuscularRays, UniformOcclusionGivesTheClosedForm) {
   for (const Case k : {Case{0.7f, 0.044140625f, 1.0f, 0.0034f}, Case{0.5f, 0.0078125f, 1.0f, 0.25f},
@@ -47,7 +47,7 @@ TEST(CrepuscularRays, UniformOcclusionGivesTheClosedForm) {
       }
     }
     if (k.weight == 0.0078125f) {
-      EXPECT_EQ(img.at(3, 5)[0], 0.25f);  // 0.25 * 0.5 * (1 + 1), exact
+      EXPECT_EQ(img.at(3, 5)[0], 0.125f);  // 0.25 * 0.5 * 128 * 2^-7, exact
     }
   }
 }

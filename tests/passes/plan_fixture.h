@@ -38,12 +38,13 @@ inline ImagePass occlusion_fill(const std::string& target, bool pattern, float v
   return p;
 }
 
-// exposure * c * (1 + weight * (1 - decay^N) / (1 - decay)), N * weight when decay = 1.
+// exposure * c * weight * (1 - decay^N) / (1 - decay), N * weight when decay = 1: the N taps
+// weight * decay^k, k = 0 .. N - 1.
 inline double crepuscular_closed_form(double c, int n, double weight, double decay,
                                       double exposure) {
   const double sum =
       decay == 1.0 ? n * weight : weight * (1.0 - std::pow(decay, n)) / (1.0 - decay);
-  return exposure * c * (1.0 + sum);
+  return exposure * c * sum;
 }
 
 }  // namespace sdfreel::test

@@ -37,11 +37,11 @@ glm::vec4 crepuscular_rays_pixel(const CrepuscularRays& r, const ImageRGBA& occ,
   if (!(r.fade > 0.0f)) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   glm::vec2 uv((float(x) + 0.5f) / float(occ.width), (float(y) + 0.5f) / float(occ.height));
   const glm::vec2 delta = (uv - r.light_uv) * (r.density / float(r.samples));
-  float c = occlusion_at(occ, uv);
+  float c = occlusion_at(occ, uv) * r.weight;  // the seed's first tap: the pixel's own
   const float jitter = hash_to_unit(hash2i(x, y, r.jitter_seed));
   uv = uv - delta * jitter;
-  float decay_acc = 1.0f;
-  for (int i = 0; i < r.samples; ++i) {
+  float decay_acc = r.decay;
+  for (int i = 1; i < r.samples; ++i) {
     uv = uv - delta;
     if (outside(uv)) break;
     c = c + occlusion_at(occ, uv) * decay_acc * r.weight;

@@ -1,9 +1,12 @@
 #pragma once
-// Crepuscular rays as an image pass: GPU Gems 3, chapter 13 (Mitchell), "Volumetric Light
-// Scattering as a Post-Process", over an occlusion target (x = 1 where the light is seen, 0 where
-// something hides it). For each pixel at uv: delta = (uv - light_uv) * density / N; c = occ(uv);
-// decay_acc = 1; N times: uv -= delta, c += occ(uv) * decay_acc * weight, decay_acc *= decay;
-// the result is c * exposure * fade.
+// Crepuscular rays as an image pass: seed 004's loop (GPU Gems 3, chapter 13, Mitchell,
+// "Volumetric Light Scattering as a Post-Process", as the seed writes it) over an occlusion target
+// (x = 1 where the light is seen, 0 where something hides it). For each pixel at uv: delta =
+// (uv - light_uv) * density / N; N taps from the pixel's own towards the light, tap k weighted
+// weight * decay^k: c = occ(uv) * weight; decay_acc = decay; N - 1 times: uv -= delta, c +=
+// occ(uv) * decay_acc * weight, decay_acc *= decay; the result is c * exposure * fade. With
+// density = exposure = 1 this is the seed's loop (it has neither); a decay below 1 makes a shaft
+// fade along its length, brightest by the light.
 // - Banding: the march (not the pixel's own tap) starts delta * j further along, j in [0, 1) from
 //   an integer hash of the pixel (never fract(sin(x) * 43758.5453), which CPUs and GPUs differ on).
 // - Borders: the march stops when uv leaves [0, 1]^2 (no streaks from clamped edge texels).
@@ -23,9 +26,10 @@ struct CrepuscularRays {
   glm::vec2 light_uv{0.5f};  // the light's image position, [0, 1]^2 on screen, y down
   float fade = 1.0f;         // crepuscular_light(): 1 facing the light, 0 behind the camera
   int samples = 128;         // seed 004's NUM_SAMPLES
-  // Sanglard's constants (techniques.md), weight rescaled from N = 100 to N = 128 so that
-  // N * weight * exposure stays 1.92.
-  float density = 0.84f, weight = 5.65f * 100.0f / 128.0f, decay = 1.0f, exposure = 0.0034f;
+  // The seed's loop has only weight and decay. GPU Gems 3's constants as the start (Sanglard's
+  // port, techniques.md): its weight 5.65 times its exposure 0.0034 is the weight here, and the
+  // decay, 1 there (no fading), is below 1 as the seed's loop means it.
+  float density = 1.0f, weight = 5.65f * 0.0034f, decay = 0.98f, exposure = 1.0f;
   uint32_t jitter_seed = 4;  // below 2^24: GL uniforms travel as floats
 };
 

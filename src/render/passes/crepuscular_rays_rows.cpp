@@ -66,7 +66,7 @@ void texel_of(const ImageRGBA& occ, F8 u, F8 v, M8 live, M8& x, M8& y) {
 struct Packet {
   F8 u, v;  // after the jitter
   F8 du, dv;
-  F8 c;  // the pixel's own tap
+  F8 c;  // the pixel's own tap, weighted
 };
 
 // The tap loop of crepuscular_rays_pixel for eight pixels. Each lane runs the scalar loop's
@@ -78,8 +78,8 @@ F8 march(const CrepuscularRays& r, const ImageRGBA& occ, const LitBox& box, Pack
   if (box.lo_x > box.hi_x) return p.c;
   const M8 left = p.du > 0.0f, right = p.du<0.0f, up = p.dv> 0.0f, down = p.dv < 0.0f;
   M8 live = splat_mask(true);
-  float decay_acc = 1.0f;
-  for (int i = 0; i < r.samples; ++i) {
+  float decay_acc = r.decay;
+  for (int i = 1; i < r.samples; ++i) {
     p.u = p.u - p.du;
     p.v = p.v - p.dv;
     live &= ~((p.u < 0.0f) | (p.u > 1.0f) | (p.v < 0.0f) | (p.v > 1.0f));
@@ -123,7 +123,7 @@ ImagePass::RowFunction crepuscular_rays_rows(const CrepuscularRays& r, const Ima
         p.dv = splat((v0 - r.light_uv.y) * s);
         M8 tx, ty;
         texel_of(occ, p.u, p.v, splat_mask(true), tx, ty);
-        p.c = gather_occlusion(occ, tx, ty, splat_mask(true));
+        p.c = gather_occlusion(occ, tx, ty, splat_mask(true)) * r.weight;
         p.u = p.u - p.du * jitter;
         p.v = p.v - p.dv * jitter;
         v = march(r, occ, box, p) * r.exposure * r.fade;

@@ -2,8 +2,9 @@
 // Exhibit 4 and the hall's air, as image passes after the hall and exhibits are drawn:
 // - occlusion: 1 where depth is still cleared (nothing drawn: the sky through the window), else 0,
 //   the seed's `depth <= 0` trick (reversed-Z there, z_w = 1 here);
-// - crepuscular rays over it (src/render/passes/crepuscular_rays.h: 128 samples, integer-hash
-//   jitter, border stop, fade when the sun leaves the view or is behind the camera);
+// - crepuscular rays over it (src/render/passes/crepuscular_rays.h: seed 004's loop, 128 taps
+//   decaying towards the pixel's end of the shaft, integer-hash jitter, border stop, fade when
+//   the sun leaves the view or is behind the camera);
 // - composite: the hall, fogged, plus the rays in the sun's colour. The fog stands in for Godot's
 //   volumetric fog: exponential distance fog (extinction 1 - exp(-sigma d), written as the
 //   rational 1 - 1 / (1 + x + x^2 / 2) to stay in plain arithmetic on both backends) whose colour
@@ -20,7 +21,7 @@ namespace sdfreel::museum {
 
 struct Atmosphere {
   float fog_density = 0.02f;  // sigma, per metre
-  float rays_strength = 0.35f;
+  float rays_strength = 0.7f;
 };
 
 // An image pass copying `from` to `to` (the hit-mask frame: the ids without air).

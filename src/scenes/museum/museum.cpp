@@ -57,7 +57,7 @@ constexpr float HIT_ID_SKY = 0.0f, HIT_ID_HALL = 2.0f;
 std::vector<ParamSpec> params() {
   std::vector<ParamSpec> p = {
       scalar_param("fog_density", 0.02, 0.0, 0.5, "sigma of the distance fog, per metre"),
-      scalar_param("rays_strength", 0.35, 0.0, 5.0, "scale of the crepuscular rays"),
+      scalar_param("rays_strength", 0.7, 0.0, 5.0, "scale of the crepuscular rays"),
       scalar_param("exhibit_lift", 0.0, -0.5, 3.0, "exhibit 1 raised above its plinth, metres"),
       scalar_param("exhibit_shift_x", 0.0, -4.0, 4.0, "exhibit 1 moved along the hall, metres"),
       scalar_param("exhibit_shift_z", 0.0, -4.0, 4.0, "exhibit 1 moved across the hall, metres"),
