@@ -28,7 +28,9 @@ std::vector<ShaderUniform> light_uniforms(const CaseLook& l) {
 std::vector<MeshInstance> case_boxes(const glm::mat4& model) {
   const float h = float(CASE_HEIGHT) * 0.5f + 0.01f;
   const float x = float(CASE_HALF_X), z = float(CASE_HALF_Z);
-  return {box_instance(model, {0.0f, -0.02f, 0.0f}, {x + 0.04f, 0.02f, z + 0.04f}, CASE_COLOUR),
+  const float floor_half = 0.5f * CASE_FLOOR_THICKNESS;
+  return {box_instance(model, {0.0f, -floor_half, 0.0f}, {x + 0.04f, floor_half, z + 0.04f},
+                       CASE_COLOUR),
           box_instance(model, {0.0f, h, z + 0.02f}, {x + 0.04f, h, 0.02f}, BACK_COLOUR),
           box_instance(model, {-x - 0.02f, h, 0.0f}, {0.02f, h, z}, CASE_COLOUR),
           box_instance(model, {x + 0.02f, h, 0.0f}, {0.02f, h, z}, CASE_COLOUR)};

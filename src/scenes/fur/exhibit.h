@@ -23,6 +23,11 @@ MeshPass lit_boxes_pass(const std::string& name, std::vector<MeshInstance> boxes
 // The light plus the shapes' contact-shadow discs, in world space.
 CaseLook exhibit_look(const glm::mat4& model, const ExhibitParams& p, const ExhibitPose& pose);
 
+// The case's floor is a slab this thick under y = 0: a host stands the case on a surface at
+// y = -CASE_FLOOR_THICKNESS, so that no face of the case lies in the host's surface (two
+// rasterisers break such a tie differently: streaks of one face or the other).
+constexpr float CASE_FLOOR_THICKNESS = 0.04f;
+
 // Appends the case and the three furry shapes in `pose` (exhibit_pose(p.physics, TIME)). `model`
 // maps exhibit space (floor of the case at y = 0, centred, interior +-CASE_HALF_X by +-CASE_HALF_Z,
 // the open side towards -z) to world space: a rotation, uniform scale and translation.

@@ -16,9 +16,12 @@ constexpr float CASE_YAW = 3.14159265f;
 
 }  // namespace
 
+// Turned, scaled and standing on the plinth top with its floor slab (not sunk into it: the slab's
+// top face and the plinth's would be one plane, drawn by each rasteriser its own way).
 glm::mat4 fur_case_pose() {
   const glm::mat4 turned = glm::rotate(glm::mat4(1.0f), CASE_YAW, glm::vec3(0, 1, 0));
-  return glm::scale(turned, glm::vec3(CASE_SCALE));
+  const glm::mat4 scaled = glm::scale(turned, glm::vec3(CASE_SCALE));
+  return glm::translate(scaled, glm::vec3(0.0f, fur::CASE_FLOOR_THICKNESS, 0.0f));
 }
 
 ExhibitPasses fur_exhibit() {
