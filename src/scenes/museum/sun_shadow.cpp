@@ -13,11 +13,16 @@ namespace {
 using glm::dvec3;
 using glm::vec3;
 
-constexpr int MARGIN_TEXELS = 2;     // the filter reaches one texel out; one more for rounding
+// The filter: the lit share of a box BOX_TEXELS wide around the point. 5 texels (2.5 cm) is about
+// the penumbra of the sun (0.53 degrees across) behind an edge 2.7 m away, the window's distance
+// from the plinths by it.
+constexpr int BOX_TEXELS = 5;
+constexpr int BOX_TAPS = BOX_TEXELS + 1;
+constexpr int MARGIN_TEXELS = 4;     // the filter reaches three texels out; one more for rounding
 constexpr float BIAS_TEXELS = 1.0f;  // constant depth bias, in texel widths along the beam
 // Slope-scaled: a surface at angle theta to the beam moves tan(theta) texels along it per texel
-// across, and the filter's taps lie up to 1.5 texels (2.1 diagonally) from the point.
-constexpr float SLOPE_TEXELS = 2.2f;
+// across, and the filter's taps lie up to 3 texels (4.2 diagonally, with little weight) away.
+constexpr float SLOPE_TEXELS = 3.0f;
 constexpr float MAX_SLOPE = 8.0f;  // grazing surfaces: the sun is all but gone there anyway
 
 SunView fit_sun_view() {
@@ -112,22 +117,46 @@ MeshPass sun_casters_pass() {
   return p;
 }
 
+// The weights of the BOX_TAPS texels k0 .. k0 + BOX_TEXELS under a box BOX_TEXELS wide centred
+// at t (texel k spans [k, k + 1)): the end texels partly, 1 - f and f, the others wholly.
+void box_weights(float t, int& k0, float w[BOX_TAPS]) {
+  const float left = t - 0.5f * float(BOX_TEXELS);
+  const float k = dm::floor(left);
+  const float f = left - k;
+  k0 = int(k);
+  for (int i = 1; i < BOX_TEXELS; ++i) w[i] = 1.0f;
+  w[0] = 1.0f - f, w[BOX_TEXELS] = f;
+}
+
 float sun_map_visibility(const ImageRGBA& map, const SunView& s, const vec3& p, float ndl) {
   const vec3 d = p - s.origin;
-  const float tx = dm::clamp((glm::dot(d, s.right) - s.u0) * s.inv_texel, -2.0f, float(s.size + 1));
-  const float ty = dm::clamp((glm::dot(d, s.up) - s.v0) * s.inv_texel, -2.0f, float(s.size + 1));
+  // Far outside the map every tap is: behind the wall.
+  const float far = float(BOX_TEXELS);
+  const float tx =
+      dm::clamp((glm::dot(d, s.right) - s.u0) * s.inv_texel, -far, float(s.size) + far);
+  const float ty = dm::clamp((glm::dot(d, s.up) - s.v0) * s.inv_texel, -far, float(s.size) + far);
   const float slope = dm::min(dm::sqrt(dm::max(1.0f - ndl * ndl, 0.0f)) / ndl, MAX_SLOPE);
   const float bias = (BIAS_TEXELS + SLOPE_TEXELS * slope) * (s.texel * s.inv_depth_range);
   const float ref = sun_map_depth(s, glm::dot(d, s.forward)) - bias;
-  const int x0 = int(dm::floor(tx)), y0 = int(dm::floor(ty));
-  int lit = 0;
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i) {
+  int x0, y0;
+  float wx[BOX_TAPS], wy[BOX_TAPS];
+  box_weights(tx, x0, wx);
+  box_weights(ty, y0, wy);
+  float lit = 0.0f;
+  int taps = 0, lit_taps = 0;  // of weight above 0: all lit is exactly 1, none exactly 0
+  for (int j = 0; j < BOX_TAPS; ++j) {
+    float row = 0.0f;
+    for (int i = 0; i < BOX_TAPS; ++i) {
+      if (!(wx[i] * wy[j] > 0.0f)) continue;
+      ++taps;
       const int x = x0 + i, y = y0 + j;
       if (x < 0 || y < 0 || x >= s.size || y >= s.size) continue;  // behind the wall
-      if (ref <= map.at(x, s.size - 1 - y)[0]) ++lit;
+      if (ref <= map.at(x, s.size - 1 - y)[0]) row = row + wx[i], ++lit_taps;
     }
-  return float(lit) * (1.0f / 9.0f);
+    lit = lit + row * wy[j];
+  }
+  if (lit_taps == taps) return 1.0f;
+  return lit_taps == 0 ? 0.0f : lit * (1.0f / float(BOX_TEXELS * BOX_TEXELS));
 }
 
 std::vector<ShaderUniform> sun_view_uniforms(const SunView& s) {

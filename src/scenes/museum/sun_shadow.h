@@ -9,8 +9,11 @@
 // The map is drawn once a frame by setup passes of the plan (render/frame_plan.h): the casters as
 // a depth-only mesh pass with the sun's view (GL rasterises it, the CPU with its own rasteriser
 // and GL's coverage rules), exhibit 1 ray-marched from the sun inside its bound (sdf_exhibit.h).
-// Shading reads it with a 3x3 percentage-closer filter and a slope-scaled bias, the same
-// operations in C++ (here) and GLSL (shaders/museum/sun_shadow.glsl).
+// Shading reads it with a box-filtered percentage-closer filter (the lit share of a box five texels
+// wide around the point, about the sun's penumbra by the window, its 6x6 texels weighted by how
+// much of each the box covers, so a shadow's edge is a ramp that moves smoothly with the point
+// instead of steps of whole texels) and a slope-scaled bias, the same operations in C++ (here) and
+// GLSL (shaders/museum/sun_shadow.glsl).
 #include <glm/glm.hpp>
 #include <vector>
 

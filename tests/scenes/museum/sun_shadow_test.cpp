@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -117,9 +119,34 @@ TEST(MuseumSunShadow, SunlitCasterFacesDoNotShadowThemselves) {
   EXPECT_EQ(lit, points);
 }
 
+// A shadow's edge is a ramp as wide as the filter's box that moves smoothly with the point, not
+// steps of whole texels: across the sunlit patch of a window pane on the floor, from the shadow of
+// the wall beside it into the mullion's, sampled every eighth of a texel, the visibility goes from
+// 0 to 1 through many values, never by more than a box column's share of a texel's eighth
+// (nearest-texel filtering jumps by a ninth at every texel's border).
+TEST(MuseumSunShadow, ShadowEdgesAreRampsNotSteps) {
+  const test::MuseumTargets t =
+      test::run_museum_passes(museum_context(find_scene("museum")->default_camera), {});
+  const vec3 open = on_floor_below(vec3(-6.0f, 3.0f, 0.65f));  // a pane's centre
+  const float step = sun_view().texel / 8.0f;
+  std::set<float> values;
+  float lowest = 1.0f, highest = 0.0f, biggest_jump = 0.0f, previous = -1.0f;
+  for (float z = open.z - 0.8f; z <= open.z + 0.8f; z += step) {
+    const float v = map_visibility(t.sun_map, vec3(open.x, 0.0f, z), UP);
+    if (previous >= 0.0f) biggest_jump = std::max(biggest_jump, std::fabs(v - previous));
+    previous = v;
+    lowest = std::min(lowest, v), highest = std::max(highest, v);
+    values.insert(v);
+  }
+  EXPECT_EQ(lowest, 0.0f);
+  EXPECT_EQ(highest, 1.0f);
+  EXPECT_GT(values.size(), 40u);
+  EXPECT_LT(biggest_jump, 0.05f);
+}
+
 TEST(MuseumSunShadow, ShadowsReachTheCastersFeet) {
   // Floor points just east of plinth 1's east face: the sun's ray from them enters the plinth
-  // after 4 cm along the floor, more than the floor's slope-scaled bias (about 2.8 cm).
+  // after 4 cm along the floor, more than the floor's slope-scaled bias (about 3.6 cm).
   const test::MuseumTargets t =
       test::run_museum_passes(museum_context(find_scene("museum")->default_camera), {});
   const vec3 base = plinth_base(0);
