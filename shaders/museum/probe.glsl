@@ -2,7 +2,7 @@
 // faces +x, -x, +y, -y, +z, -z stacked vertically in u_probe, bilinear within a face).
 #include "common/det_math.glsl"
 
-const int PROBE_SIZE = 48;
+const int PROBE_SIZE = 128;
 uniform sampler2D u_probe;
 
 vec3 probe_texel(int face, float x, float y) {

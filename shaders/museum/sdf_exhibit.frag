@@ -10,6 +10,8 @@
 #include "museum/exhibit_bound.glsl"
 
 const float NORMAL_EPS = 1e-3;
+const float SURFACE_BIAS_FACTOR = 2.0;  // sdf_morph's (src/scenes/sdf_morph/march.h)
+const float MIN_SURFACE_BIAS = 2e-3;
 
 uniform MorphUniforms u_morph;
 uniform mat4 u_exhibit_inv_model;
@@ -38,6 +40,34 @@ vec3 to_world(vec3 v) {
   return u_exhibit_to_world0 * v.x + u_exhibit_to_world1 * v.y + u_exhibit_to_world2 * v.z;
 }
 
+float hit_eps(float t) {
+  precise float e = u_morph.naive != 0 ? u_morph.hit_eps
+                                       : dm_max(MIN_EPS, u_morph.hit_eps * u_pixel_angle * t);
+  return e;
+}
+
+vec3 reflect_dir(vec3 d, vec3 n) {
+  precise vec3 r = d - 2.0 * dm_dot(n, d) * n;
+  return r;
+}
+
+// exhibit_reflection() of the C++: the object itself, or else the hall through the probe.
+vec3 exhibit_reflection(vec3 p, vec3 n, vec3 r, float t_hit) {
+  precise vec3 ro = p + n * dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * hit_eps(t_hit));
+  precise vec2 span = box_span(ro, r);
+  precise float t = dm_max(span.x, 0.0);
+  for (int i = 0; i < u_morph.reflect_steps && t < span.y; ++i) {
+    precise float d = mapObject(ro + r * t, u_morph);
+    if (d < hit_eps(t_hit + t)) {
+      precise vec3 nq = object_normal(ro + r * t);
+      precise vec3 mirror = sample_probe(to_world(reflect_dir(r, nq)));
+      return shadeObjectLit(nq, r, mirror, 1.0, 1.0, u_morph);
+    }
+    t = t + d;
+  }
+  return sample_probe(to_world(r));
+}
+
 void main() {
   precise vec3 to_point = v_world_position - u_camera_origin;
   precise vec3 dir = to_point / sqrt(dm_dot(to_point, to_point));
@@ -48,9 +78,7 @@ void main() {
   bool hit = false;
   for (int i = 0; i < u_morph.max_steps && t < span.y; ++i) {
     precise float d = mapObject(o + dl * t, u_morph);
-    precise float eps = u_morph.naive != 0 ? u_morph.hit_eps
-                                           : dm_max(MIN_EPS, u_morph.hit_eps * u_pixel_angle * t);
-    if (d < eps) {
+    if (d < hit_eps(t)) {
       hit = true;
       break;
     }
@@ -67,9 +95,12 @@ void main() {
     frag_color = vec4(surfaceOutput(u_morph.surface, t * u_exhibit_scale, world_n), 1.0);
     return;
   }
-  precise vec3 r = to_world(dl - 2.0 * dm_dot(n, dl) * n);
+  if (u_morph.hit_mask != 0) {
+    frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
+    return;
+  }
+  precise vec3 reflection = exhibit_reflection(p, n, reflect_dir(dl, n), t);
   precise float ndl = dm_dot(world_n, TO_SUN);
   precise float shadow = ndl > 0.0 ? sun_visibility(world_hit, world_n, ndl) : 0.0;
-  frag_color = vec4(shadeObjectLit(n, dl, sample_probe(r), shadow, 1.0, u_morph), 1.0);
-  if (u_morph.hit_mask != 0) frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
+  frag_color = vec4(shadeObjectLit(n, dl, reflection, shadow, 1.0, u_morph), 1.0);
 }

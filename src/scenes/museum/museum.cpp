@@ -125,9 +125,11 @@ MeshPass hall_pass(const HallLight& light, bool ids, int surface) {
 class MuseumScene : public Scene {
  public:
   void prepare(const FrameContext& ctx) override {
+    // The probe is a pure function of its centre: made again only when exhibit 1 moves.
     const glm::vec3 centre = exhibit_one_centre(ctx);
-    probe_ = std::make_shared<const ReflectionProbe>(
-        render_probe(centre, hall_boxes(), HallLight{centre, sun_occluders()}));
+    if (!probe_ || probe_->centre != centre)
+      probe_ = std::make_shared<const ReflectionProbe>(
+          render_probe(centre, hall_boxes(), HallLight{centre, sun_occluders()}));
     prints_ = &lenticular_card::default_card_prints();
   }
   std::vector<ShaderTexture> shader_textures() const override {

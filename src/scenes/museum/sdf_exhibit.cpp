@@ -19,6 +19,10 @@ using glm::vec3;
 
 constexpr float MIN_EPS = 1e-4f;  // object units
 constexpr float NORMAL_EPS = 1e-3f;
+// A reflected ray starts this many hit thresholds off the surface, and at least this far
+// (sdf_morph's own, march.h).
+using sdf_morph::MIN_SURFACE_BIAS;
+using sdf_morph::SURFACE_BIAS_FACTOR;
 const vec3 BOUND_HALF(sdf_morph::OBJECT_BOUND_RADIUS);  // the box around the bounding sphere
 
 // Everything a fragment of the exhibit needs, fixed for the frame.
@@ -54,6 +58,31 @@ vec3 object_normal(const vec3& p, const sdf_morph::MorphUniforms& u) {
   return g / dm::sqrt(glm::dot(g, g));
 }
 
+// The hit threshold at path length t (object units): the quality preset's, in pixel footprints.
+float hit_eps(const ExhibitFrame& f, float t) {
+  return f.morph.naive ? f.morph.hit_eps : dm::max(MIN_EPS, f.morph.hit_eps * f.pixel_angle * t);
+}
+
+// What the mirror at p (normal n, reflected direction r, object space; t_hit the path so far)
+// sees: the object itself (the mug's inside, the torus's far side) marched as sdf_morph's
+// reflection is, shaded unshadowed and mirroring the probe, or else the hall through the probe.
+vec3 exhibit_reflection(const ExhibitFrame& f, const vec3& p, const vec3& n, const vec3& r,
+                        float t_hit) {
+  const vec3 ro = p + n * dm::max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * hit_eps(f, t_hit));
+  const glm::vec2 span = box_span(ro, r);
+  float t = dm::max(span.x, 0.0f);
+  for (int i = 0; i < f.morph.reflect_steps && t < span.y; ++i) {
+    const float d = sdf_morph::mapObject(ro + r * t, f.morph);
+    if (d < hit_eps(f, t_hit + t)) {
+      const vec3 nq = object_normal(ro + r * t, f.morph);
+      const vec3 mirror = sample_probe(*f.probe, f.to_world * sdf_morph::reflectDir(r, nq));
+      return sdf_morph::shadeObjectLit(nq, r, mirror, 1.0f, 1.0f, f.morph);
+    }
+    t = t + d;
+  }
+  return sample_probe(*f.probe, f.to_world * r);
+}
+
 // The camera's ray through a point of the bound's back face, marched in object space with plain
 // sphere tracing (the morph is 1-Lipschitz) and the quality preset's steps and threshold (in pixel
 // footprints).
@@ -68,9 +97,7 @@ bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, const ImageRG
   bool hit = false;
   for (int i = 0; i < f.morph.max_steps && t < span.y; ++i) {
     const float d = sdf_morph::mapObject(o + dl * t, f.morph);
-    const float eps =
-        f.morph.naive ? f.morph.hit_eps : dm::max(MIN_EPS, f.morph.hit_eps * f.pixel_angle * t);
-    if (d < eps) {
+    if (d < hit_eps(f, t)) {
       hit = true;
       break;
     }
@@ -87,12 +114,16 @@ bool shade_exhibit(const ExhibitFrame& f, const vec3& world_point, const ImageRG
     colour = glm::vec4(surfaceOutput(f.morph.surface, t * f.scale, world_n), 1.0f);
     return true;
   }
-  const vec3 r = f.to_world * sdf_morph::reflectDir(dl, n);
+  if (f.morph.hit_mask) {
+    colour = glm::vec4(vec3(sdf_morph::HIT_ID_OBJECT), 1.0f);
+    return true;
+  }
+  const vec3 reflection = exhibit_reflection(f, p, n, sdf_morph::reflectDir(dl, n), t);
   const float ndl = glm::dot(world_n, TO_SUN);
   const float shadow =
       ndl > 0.0f ? sun_visibility(world_hit, world_n, ndl, f.light, {&sun_map, &sun_view()}) : 0.0f;
-  const vec3 c = sdf_morph::shadeObjectLit(n, dl, sample_probe(*f.probe, r), shadow, 1.0f, f.morph);
-  colour = glm::vec4(f.morph.hit_mask ? vec3(sdf_morph::HIT_ID_OBJECT) : c, 1.0f);
+  const vec3 c = sdf_morph::shadeObjectLit(n, dl, reflection, shadow, 1.0f, f.morph);
+  colour = glm::vec4(c, 1.0f);
   return true;
 }
 

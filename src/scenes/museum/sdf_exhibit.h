@@ -4,7 +4,8 @@
 // object on screen even with the camera inside the box; each fragment marches the camera's ray in
 // the object's space (through the inverse model matrix) with sdf_morph's distance function, shades
 // the hit with sdf_morph's shading under the museum's sun (shadowed through the sun's map, the
-// pass's input), reflecting the hall's probe (copied into the pass), and writes the hit's own
+// pass's input), reflecting itself (the mirror ray marched through the object again, as sdf_morph
+// traces its reflection) or else the hall's probe (copied into the pass), and writes the hit's own
 // depth, so the depth test against the hall (late, on the marched depth) hides it and it hides the
 // hall.
 // The GLSL twin is shaders/museum/sdf_exhibit.frag.
