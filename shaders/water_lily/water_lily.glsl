@@ -320,7 +320,8 @@ vec3 grade(vec3 c, vec3 rd, LilyUniforms u) {
   precise float sx = dm_dot(rd, u.cam_right) / f * u.inv_tan_half_fov * u.inv_aspect;
   precise float sy = dm_dot(rd, u.cam_up) / f * u.inv_tan_half_fov;
   precise float r2 = sx * sx + sy * sy;
-  return col * (1.0 / (1.0 + u.vignette * r2 * r2));
+  precise float falloff = 1.0 + u.vignette * u.vignette * r2;  // the seed's vignette
+  return col * (1.0 / (falloff * falloff));
 }
 
 vec3 sceneRadiance(Ray ray, LilyUniforms u, inout RayStats stats) {

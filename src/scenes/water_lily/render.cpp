@@ -307,12 +307,15 @@ vec3 grade(const vec3& c, const vec3& rd, const LilyUniforms& u) {
   // Saturation: away from (or towards) the grey of dot(col, 0.4).
   const float grey = glm::dot(col, vec3(SATURATION_GREY));
   col = dm::mix(vec3(grey), col, u.saturation);
-  // Vignette from the ray's position on the screen.
+  // The seed's vignette from the ray's position on the screen (1 at the frame's sides): the
+  // inverse of the square of (falloff r)^2 + 1, natural vignetting's cos^4 law in its rational
+  // form.
   const float f = glm::dot(rd, u.cam_forward);
   const float sx = glm::dot(rd, u.cam_right) / f * u.inv_tan_half_fov * u.inv_aspect;
   const float sy = glm::dot(rd, u.cam_up) / f * u.inv_tan_half_fov;
   const float r2 = sx * sx + sy * sy;
-  return col * (1.0f / (1.0f + u.vignette * r2 * r2));
+  const float falloff = 1.0f + u.vignette * u.vignette * r2;
+  return col * (1.0f / (falloff * falloff));
 }
 
 PrimarySpan primarySpan(const Ray& ray, const LilyUniforms& u) {

@@ -31,7 +31,7 @@ struct LilyUniforms {
   float translucency = 0.5f;
   float contrast = 0.3f;
   float saturation = 1.1f;
-  float vignette = 0.3f;
+  float vignette = 0.45f;
   float fog_distance = 30;
   float shadow_k = 8;
   // The camera, for the vignette: screen position of a ray direction.

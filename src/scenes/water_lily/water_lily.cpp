@@ -19,7 +19,7 @@
 //   fog_distance        metres where the distance fog is complete
 //   contrast            the seed's contrast curve mixed in, 0..1
 //   saturation          1 = unchanged, above 1 more saturated
-//   vignette            darkening towards the corners
+//   vignette            the seed's vignette falloff: 1 / (1 + (falloff r)^2)^2, r 1 at the sides
 #include <memory>
 #include <utility>
 #include <vector>
@@ -90,7 +90,8 @@ SceneInfo water_lily_scene_info() {
       scalar("fog_distance", 28.0, 1.0, 500.0, "metres where the distance fog is complete"),
       scalar("contrast", 0.35, 0.0, 1.0, "the seed's contrast curve col^2 (3 - 2 col), mixed in"),
       scalar("saturation", 1.15, 0.0, 2.0, "1 keeps the colours; above 1 more saturated"),
-      scalar("vignette", 0.25, 0.0, 2.0, "darkening towards the corners"),
+      scalar("vignette", 0.45, 0.0, 2.0,
+             "the seed's vignette falloff: 1 / (1 + (falloff r)^2)^2, r 1 at the frame's sides"),
   };
   info.default_camera = CameraPose{{0.2, 1.25, -1.6}, {0.4, 0.05, 4.0}, 45.0, 0.0};
   info.shader = "water_lily/water_lily.glsl";

@@ -131,12 +131,18 @@ TEST(WaterLily, GradingFollowsTheSeed) {
   EXPECT_LT(grade(vec3(0.2f), rd, u).x, 0.2f);
   EXPECT_GT(grade(vec3(0.8f), rd, u).x, 0.8f);
   EXPECT_FLOAT_EQ(grade(vec3(0.5f), rd, u).x, 0.5f);
-  // Vignette: the centre keeps its value, an off-axis ray is darker.
+  // Vignette, the seed's curve: the centre keeps its value; a ray through the screen at (sx, sy)
+  // (1 at the frame's sides) is scaled by 1 / (1 + falloff^2 r^2)^2.
   u.contrast = 0.0f;
   u.vignette = 0.5f;
   EXPECT_EQ(grade(vec3(0.5f), rd, u), vec3(0.5f));
-  const vec3 corner = glm::normalize(u.cam_forward + 0.4f * u.cam_right + 0.3f * u.cam_up);
-  EXPECT_LT(grade(vec3(0.5f), corner, u).x, 0.49f);
+  const double sx = 0.8, sy = 0.6;  // r^2 = 1
+  const vec3 off_axis =
+      glm::normalize(u.cam_forward + float(sx / (u.inv_tan_half_fov * u.inv_aspect)) * u.cam_right +
+                     float(sy / u.inv_tan_half_fov) * u.cam_up);
+  const double want =
+      0.5 / ((1.0 + 0.25 * (sx * sx + sy * sy)) * (1.0 + 0.25 * (sx * sx + sy * sy)));
+  EXPECT_NEAR(grade(vec3(0.5f), off_axis, u).x, want, 1e-5) << "0.5 / 1.25^2 = 0.32";
 }
 
 TEST(WaterLily, HugeTimeKeepsAnimating) {
