@@ -2,9 +2,11 @@
 // operations; see there for the model), the sun shadowed through its map (museum/sun_shadow.glsl).
 #include "common/frame.glsl"
 #include "common/noise.glsl"
+#include "museum/paintings.glsl"
 #include "museum/sun_shadow.glsl"
 
 const float MATERIAL_FLOOR = 2.0;
+const float MATERIAL_PAINTING = 3.0;
 
 const vec3 TO_SUN = vec3(-0.868287, 0.434143, 0.239994);
 const vec3 SUN_RADIANCE = vec3(3.4, 3.1, 2.6);
@@ -21,6 +23,7 @@ const float SUN_DISC = 40.0;
 const float SUN_GLOW = 0.5;
 const float SPECULAR_F0 = 0.04;
 const float FLOOR_ROUGHNESS = 0.45;
+const float CANVAS_ROUGHNESS = 0.8;
 const float PLANK_W = 0.2, PLANK_L = 1.2, SEAM = 0.03;
 const uint PLANK_SEED = 7u;
 const float NORMAL_OFFSET = 0.002;
@@ -60,9 +63,12 @@ vec3 sky(vec3 d) {
 
 vec3 hall_radiance(vec3 p, vec3 normal, vec3 albedo_in, float material) {
   precise vec3 n = normal / sqrt(dm_dot(normal, normal));
-  bool is_floor = material >= MATERIAL_FLOOR;
-  precise vec3 albedo = is_floor ? floor_albedo(p, albedo_in) : albedo_in;
-  precise float roughness = is_floor ? FLOOR_ROUGHNESS : material;
+  bool is_floor = material == MATERIAL_FLOOR;
+  bool is_painting = material >= MATERIAL_PAINTING;
+  precise vec3 albedo = is_floor      ? floor_albedo(p, albedo_in)
+                        : is_painting ? painting_albedo(p, int(material - MATERIAL_PAINTING))
+                                      : albedo_in;
+  precise float roughness = is_floor ? FLOOR_ROUGHNESS : is_painting ? CANVAS_ROUGHNESS : material;
   precise vec3 to_eye = u_eye - p;
   precise vec3 v = to_eye / sqrt(dm_dot(to_eye, to_eye));
   precise float ndl = dm_dot(n, TO_SUN);

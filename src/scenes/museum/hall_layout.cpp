@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scenes/museum/paintings.h"
 #include "sdf/sdf.h"
 
 namespace sdfreel::museum {
@@ -19,15 +20,6 @@ const vec3 WOOD_DARK(0.18f, 0.11f, 0.07f);  // door, bench, frames
 constexpr float WOOD_ROUGHNESS = 0.5f;
 const vec3 LABEL_ALBEDO(0.85f, 0.84f, 0.8f);
 constexpr float DOOR_X0 = 3.2f, DOOR_X1 = 4.6f, DOOR_H = 2.4f;
-
-// The pictures on the long walls: centre x and canvas colour.
-struct Picture {
-  float x;
-  vec3 canvas;
-};
-const Picture NORTH_PICTURES[] = {{-3.0f, {0.55f, 0.12f, 0.08f}}, {0.5f, {0.1f, 0.25f, 0.45f}}};
-const Picture SOUTH_PICTURES[] = {
-    {-3.0f, {0.2f, 0.4f, 0.18f}}, {0.5f, {0.6f, 0.45f, 0.1f}}, {3.8f, {0.3f, 0.2f, 0.4f}}};
 
 void add(std::vector<HallBox>& b, vec3 lo, vec3 hi, vec3 albedo, float material) {
   b.push_back({lo, hi, albedo, material});
@@ -62,15 +54,17 @@ void west_wall_with_window(std::vector<HallBox>& b) {
   add(b, {xm - h, MULLION_Y - h, WINDOW_Z0}, {xm + h, MULLION_Y + h, WINDOW_Z1}, WOOD_DARK, 0.5f);
 }
 
-// A framed picture on a long wall (side -1: north, +1: south) with a label beside it.
-void picture(std::vector<HallBox>& b, const Picture& p, float side) {
-  const float wall = side * ROOM_Z, in = -side;  // `in` points into the room
+// Painting k in its frame on its long wall, with a label beside it.
+void picture(std::vector<HallBox>& b, int k) {
+  const Painting& p = painting(k);
+  const float wall = p.side * ROOM_Z, in = -p.side;  // `in` points into the room
   auto slab = [&](float x0, float x1, float y0, float y1, float depth, vec3 c, float m) {
     const float z0 = wall, z1 = wall + in * depth;
     add(b, {x0, y0, glm::min(z0, z1)}, {x1, y1, glm::max(z0, z1)}, c, m);
   };
   slab(p.x - 0.7f, p.x + 0.7f, 1.3f, 2.4f, 0.05f, WOOD_DARK, WOOD_ROUGHNESS);
-  slab(p.x - 0.6f, p.x + 0.6f, 1.4f, 2.3f, 0.06f, p.canvas, 0.8f);
+  slab(p.x - CANVAS_HALF_W, p.x + CANVAS_HALF_W, CANVAS_Y0, CANVAS_Y1, 0.06f, p.key,
+       MATERIAL_PAINTING + float(k));
   slab(p.x + 0.85f, p.x + 1.15f, 1.45f, 1.6f, 0.02f, LABEL_ALBEDO, 0.6f);
 }
 
@@ -106,8 +100,7 @@ std::vector<HallBox> hall_boxes() {
   std::vector<HallBox> b;
   shell(b);
   west_wall_with_window(b);
-  for (const Picture& p : NORTH_PICTURES) picture(b, p, -1.0f);
-  for (const Picture& p : SOUTH_PICTURES) picture(b, p, 1.0f);
+  for (int k = 0; k < PAINTING_COUNT; ++k) picture(b, k);
   bench(b);
   plinths(b);
   return b;

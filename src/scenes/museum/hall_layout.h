@@ -26,13 +26,14 @@ constexpr int PLINTH_COUNT = 4;
 glm::vec3 plinth_base(int index);
 
 // Material codes of HallBox::material (instance data w): roughness in [0, 1), or a pattern.
-constexpr float MATERIAL_FLOOR = 2.0f;  // oak planks; roughness FLOOR_ROUGHNESS
+constexpr float MATERIAL_FLOOR = 2.0f;     // oak planks; roughness FLOOR_ROUGHNESS
+constexpr float MATERIAL_PAINTING = 3.0f;  // + k: painting k's canvas (museum/paintings.h)
 
 // An axis-aligned box of the hall with its material.
 struct HallBox {
   glm::vec3 lo, hi;
   glm::vec3 albedo;  // linear Rec.709
-  float material;    // roughness in [0, 1), or MATERIAL_FLOOR
+  float material;    // roughness in [0, 1), MATERIAL_FLOOR or MATERIAL_PAINTING + k
 };
 
 // Every box of the hall, in a fixed order.

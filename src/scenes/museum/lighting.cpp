@@ -1,5 +1,6 @@
 #include "scenes/museum/lighting.h"
 
+#include "scenes/museum/paintings.h"
 #include "sdf/det_math.h"
 #include "sdf/noise.h"
 
@@ -22,6 +23,7 @@ constexpr float PENUMBRA_PER_M = 0.0093f;  // the sun's angular diameter, radian
 constexpr float PENUMBRA_MIN = 0.002f;
 constexpr float SPECULAR_F0 = 0.04f;
 constexpr float FLOOR_ROUGHNESS = 0.45f;
+constexpr float CANVAS_ROUGHNESS = 0.8f;  // oil on canvas: a broad, faint sheen
 constexpr float PLANK_W = 0.2f, PLANK_L = 1.2f, SEAM = 0.03f;
 constexpr uint32_t PLANK_SEED = 7u;
 constexpr float NORMAL_OFFSET = 0.002f;  // shadow lookups start this far off the surface
@@ -108,9 +110,12 @@ vec3 sky(const vec3& d) {
 vec3 hall_radiance(const vec3& p, const vec3& normal, const vec3& albedo_in, float material,
                    const HallLight& light, const SunMap& map) {
   const vec3 n = normal / dm::sqrt(glm::dot(normal, normal));
-  const bool is_floor = material >= MATERIAL_FLOOR;
-  const vec3 albedo = is_floor ? floor_albedo(p, albedo_in) : albedo_in;
-  const float roughness = is_floor ? FLOOR_ROUGHNESS : material;
+  const bool is_floor = material == MATERIAL_FLOOR;
+  const bool is_painting = material >= MATERIAL_PAINTING;
+  const vec3 albedo = is_floor      ? floor_albedo(p, albedo_in)
+                      : is_painting ? painting_albedo(p, int(material - MATERIAL_PAINTING))
+                                    : albedo_in;
+  const float roughness = is_floor ? FLOOR_ROUGHNESS : is_painting ? CANVAS_ROUGHNESS : material;
   const vec3 to_eye = light.eye - p;
   const vec3 v = to_eye / dm::sqrt(glm::dot(to_eye, to_eye));
   const float ndl = glm::dot(n, TO_SUN);

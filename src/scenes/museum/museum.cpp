@@ -204,7 +204,8 @@ SceneInfo museum_scene_info() {
   info.description =
       "A small gallery hall (seed 004) drawn as meshes with a depth buffer: floor, walls, "
       "ceiling, a tall window the low sun shines through, a door, a bench, four plinths, "
-      "pictures and labels. Exhibit 1 is the sdf_morph object, ray-marched inside its bounding "
+      "paintings of landscapes and labels. Exhibit 1 is the sdf_morph object, ray-marched inside "
+      "its bounding "
       "box and composited with the hall by depth; exhibit 2 is the lenticular card (the scene "
       "lenticular_card's ray pass, depth tested against the hall); exhibit 3 is the fur case "
       "(the scene fur's shell-textured shapes, pushed and bouncing, as meshes); exhibit 4 is the "

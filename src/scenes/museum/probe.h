@@ -2,8 +2,8 @@
 // The reflection probe of exhibit 1 (seed 004's image-based reflections): a cube map of the hall
 // seen from the exhibit's centre, rendered when the centre moves by casting each texel's ray
 // against the hall's boxes (exact for this hall of boxes: no rasterisation of six views needed)
-// and shading the hit as the hall pass does (or the sky through the window). Both backends read the same
-// texels: the CPU through sample_probe, GL through the texture u_probe with the same bilinear
+// and shading the hit as the hall pass does (or the sky through the window). Both backends read the
+// same texels: the CPU through sample_probe, GL through the texture u_probe with the same bilinear
 // filter in code (shaders/museum/probe.glsl).
 #include <glm/glm.hpp>
 #include <vector>
