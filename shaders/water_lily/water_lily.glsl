@@ -196,11 +196,23 @@ vec3 lightSurface(Surface s, vec3 n, vec3 rd, float sun_shadow, float fill_shado
   return col;
 }
 
+// throughPetal() of src/scenes/water_lily/render.h: out of a backlit petal, along -n.
+const int PETAL_EXIT_STEPS = 8;
+vec3 throughPetal(vec3 p, vec3 n, float bias, LilyUniforms u, inout RayStats stats) {
+  precise vec3 q = p - n * bias;
+  for (int i = 0; i < PETAL_EXIT_STEPS; ++i) {
+    precise float d = mapScene(q, false, u, stats);
+    if (d > bias) break;
+    q = q - n * (bias - d);
+  }
+  return q;
+}
+
 vec3 shadeSurface(vec3 p, vec3 n, vec3 rd, float bias, LilyUniforms u, inout RayStats stats) {
   Surface s = surfaceAt(p, true, u);
   precise vec3 o = p + n * bias;
   bool sun_side = dm_dot(n, u.sun_dir) > 0.0 || s.translucent > 0.0;
-  precise vec3 os = dm_dot(n, u.sun_dir) > 0.0 ? o : p - n * bias;
+  precise vec3 os = dm_dot(n, u.sun_dir) > 0.0 ? o : throughPetal(p, n, bias, u, stats);
   precise float sun =
       sun_side ? softShadow(os, u.sun_dir, u.shadow_k, u.shadow_steps, u, stats) : 1.0;
   precise float fill =

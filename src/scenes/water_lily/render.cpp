@@ -227,6 +227,17 @@ float mapScene(const vec3& p, bool leaves, const LilyUniforms& u, RayStats& stat
   return mapNearest(p, u, BOUND_MARGIN, leaves).d;
 }
 
+vec3 throughPetal(const vec3& p, const vec3& n, float bias, const LilyUniforms& u,
+                  RayStats& stats) {
+  vec3 q = p - n * bias;
+  for (int i = 0; i < PETAL_EXIT_STEPS; ++i) {
+    const float d = mapScene(q, false, u, stats);
+    if (d > bias) break;
+    q = q - n * (bias - d);
+  }
+  return q;
+}
+
 vec3 skyColor(const vec3& d, const LilyUniforms& u) {
   const float y = dm::max(d.y, 0.0f);
   vec3 col = dm::mix(SKY_HORIZON, SKY_ZENITH, dm::sqrt(y));
@@ -382,7 +393,7 @@ PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyU
     const float bias = surfaceBias(hitEps(s.eps_per_t, t, u));
     const vec3 o = ps.p + ps.n * bias;
     sr.sun = glm::dot(ps.n, u.sun_dir) > 0.0f || ps.surface.translucent > 0.0f;
-    sr.sun_origin = glm::dot(ps.n, u.sun_dir) > 0.0f ? o : ps.p - ps.n * bias;
+    sr.sun_origin = glm::dot(ps.n, u.sun_dir) > 0.0f ? o : throughPetal(ps.p, ps.n, bias, u, stats);
     sr.fill = true;
     sr.fill_origin = o;
   } else if (s.water) {

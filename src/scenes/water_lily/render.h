@@ -17,6 +17,13 @@ constexpr float BOUND_MARGIN = 0.05f;  // parts farther than this contribute the
 // The marched scene at p: flowers and (if `leaves`) pads, bounds standing in for far parts.
 float mapScene(const glm::vec3& p, bool leaves, const LilyUniforms& u, RayStats& stats);
 
+// Where the sun's shadow ray for the light through a backlit petal starts: from p (normal n, the
+// side away from the sun) along -n out of the flower, stepping by the depth inside. From just
+// under the surface it would start inside the petal, find it, and let no light through.
+constexpr int PETAL_EXIT_STEPS = 8;
+glm::vec3 throughPetal(const glm::vec3& p, const glm::vec3& n, float bias, const LilyUniforms& u,
+                       RayStats& stats);
+
 // Sky radiance in direction d (unit): horizon to zenith gradient, FBM cloud glow, sun glow.
 glm::vec3 skyColor(const glm::vec3& d, const LilyUniforms& u);
 

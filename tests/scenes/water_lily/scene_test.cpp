@@ -145,6 +145,34 @@ TEST(WaterLily, GradingFollowsTheSeed) {
   EXPECT_NEAR(grade(vec3(0.5f), off_axis, u).x, want, 1e-5) << "0.5 / 1.25^2 = 0.32";
 }
 
+// Seen against the sun, a petal's far side glows with the light through it (petal_translucency):
+// the sun's shadow ray for that light starts out of the flower (throughPetal), not inside the
+// petal, where it found the petal and let nothing through.
+TEST(WaterLily, BacklitPetalsGlowWithTheLightThroughThem) {
+  const FlowerPlacement& f = FLOWERS[0];
+  const vec3 centre(f.xz.x, 0.15f, f.xz.y);
+  const LilyUniforms u0 = make_lily_uniforms(context(0.0));
+  // Across the flower from the sun, a little above it: the petals' far sides face the camera.
+  const vec3 away = -glm::normalize(vec3(u0.sun_dir.x, 0.0f, u0.sun_dir.z));
+  const glm::dvec3 eye(centre + away * 1.1f + vec3(0.0f, 0.35f, 0.0f));
+  Image img[2];
+  for (int k = 0; k < 2; ++k) {
+    FrameContext ctx = test::scene_context(info(), 64, 36, 0.0, Quality::Draft);
+    ctx.pose = CameraPose{eye, glm::dvec3(centre), 40.0, 0.0};
+    ctx.params.set("petal_translucency", {k == 0 ? 0.0 : 0.6});
+    finish_frame_context(ctx);
+    img[k] = test::render_pixels(info(), ctx);
+  }
+  int glowing = 0;
+  for (size_t i = 0; i < img[0].px.size(); ++i) {
+    const float a = glm::dot(img[0].px[i], vec3(0.2126f, 0.7152f, 0.0722f));
+    const float b = glm::dot(img[1].px[i], vec3(0.2126f, 0.7152f, 0.0722f));
+    ASSERT_GE(b, a - 1e-6f) << i;  // light through a petal only adds
+    glowing += b > 1.1f * a + 0.005f;
+  }
+  EXPECT_GT(glowing, int(img[0].px.size()) / 20) << glowing << " of " << img[0].px.size();
+}
+
 TEST(WaterLily, HugeTimeKeepsAnimating) {
   const LilyUniforms a = make_lily_uniforms(context(1e6));
   const LilyUniforms b = make_lily_uniforms(context(1e6 + 1.0 / 30.0));
