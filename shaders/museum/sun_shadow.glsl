@@ -42,7 +42,8 @@ float sun_map_visibility(vec3 p, float ndl) {
   precise vec3 d = p - u_sun_origin;
   float size = u_sun_map.w;
   float far = float(SUN_BOX_TEXELS);
-  precise float tx = dm_clamp((dm_dot(d, u_sun_right) - u_sun_map.x) * u_sun_map.z, -far, size + far);
+  precise float tx =
+      dm_clamp((dm_dot(d, u_sun_right) - u_sun_map.x) * u_sun_map.z, -far, size + far);
   precise float ty = dm_clamp((dm_dot(d, u_sun_up) - u_sun_map.y) * u_sun_map.z, -far, size + far);
   precise float slope = dm_min(sqrt(dm_max(1.0 - ndl * ndl, 0.0)) / ndl, SUN_MAX_SLOPE);
   precise float bias = (SUN_BIAS_TEXELS + SUN_SLOPE_TEXELS * slope) * u_sun_depth.z;
