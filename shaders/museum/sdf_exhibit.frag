@@ -10,8 +10,6 @@
 #include "museum/exhibit_bound.glsl"
 
 const float NORMAL_EPS = 1e-3;
-const float SURFACE_BIAS_FACTOR = 2.0;  // sdf_morph's (src/scenes/sdf_morph/march.h)
-const float MIN_SURFACE_BIAS = 2e-3;
 
 uniform MorphUniforms u_morph;
 uniform mat4 u_exhibit_inv_model;
@@ -46,21 +44,16 @@ float hit_eps(float t) {
   return e;
 }
 
-vec3 reflect_dir(vec3 d, vec3 n) {
-  precise vec3 r = d - 2.0 * dm_dot(n, d) * n;
-  return r;
-}
-
 // exhibit_reflection() of the C++: the object itself, or else the hall through the probe.
 vec3 exhibit_reflection(vec3 p, vec3 n, vec3 r, float t_hit) {
-  precise vec3 ro = p + n * dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * hit_eps(t_hit));
+  precise vec3 ro = p + n * surfaceBias(hit_eps(t_hit));
   precise vec2 span = box_span(ro, r);
   precise float t = dm_max(span.x, 0.0);
   for (int i = 0; i < u_morph.reflect_steps && t < span.y; ++i) {
     precise float d = mapObject(ro + r * t, u_morph);
     if (d < hit_eps(t_hit + t)) {
       precise vec3 nq = object_normal(ro + r * t);
-      precise vec3 mirror = sample_probe(to_world(reflect_dir(r, nq)));
+      precise vec3 mirror = sample_probe(to_world(reflectDir(r, nq)));
       return shadeObjectLit(nq, r, mirror, 1.0, 1.0, u_morph);
     }
     t = t + d;
@@ -99,7 +92,7 @@ void main() {
     frag_color = vec4(1.0);  // sdf_morph's HIT_ID_OBJECT
     return;
   }
-  precise vec3 reflection = exhibit_reflection(p, n, reflect_dir(dl, n), t);
+  precise vec3 reflection = exhibit_reflection(p, n, reflectDir(dl, n), t);
   precise float ndl = dm_dot(world_n, TO_SUN);
   precise float shadow = ndl > 0.0 ? sun_visibility(world_hit, world_n, ndl) : 0.0;
   frag_color = vec4(shadeObjectLit(n, dl, reflection, shadow, 1.0, u_morph), 1.0);

@@ -30,8 +30,6 @@ const float FLOOR_FADE_END = 20.0;
 // ---- marching ----
 const float MIN_HIT_EPS = 1e-5;
 const float MIN_NORMAL_EPS = 1e-4;
-const float SURFACE_BIAS_FACTOR = 2.0;
-const float MIN_SURFACE_BIAS = 2e-3;
 const float NO_HIT = -1.0;
 const float MISS_SPAN = 1e30;
 const float HIT_ID_NONE = 0.0;
@@ -88,15 +86,6 @@ float normalEps(float pixel_angle, float t, MorphUniforms u) {
 vec2 groupSpan(vec3 ro, vec3 rd, MorphUniforms u) {
   if (u.naive != 0) { precise vec2 r_ = vec2(0.0, u.max_dist); return r_; }
   precise vec2 r_ = intersectSphere(ro, rd, groupBoundCenter(), GROUP_BOUND_RADIUS);
-  return r_;
-}
-float surfaceBias(float eps) {
-  precise float r_ = dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps);
-  return r_;
-}
-
-vec3 reflectDir(vec3 d, vec3 n) {
-  precise vec3 r_ = d - 2.0 * dm_dot(n, d) * n;
   return r_;
 }
 

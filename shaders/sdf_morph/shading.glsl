@@ -1,6 +1,20 @@
 // sdf_morph shading shared with the museum's exhibit 1 (shaders/museum/sdf_exhibit.frag): the
-// key light, ambient and Fresnel of src/scenes/sdf_morph/render.cpp (same names and operations).
+// key light, ambient and Fresnel of src/scenes/sdf_morph/render.cpp, and the mirror ray's
+// direction and start of src/scenes/sdf_morph/march.h (same names and operations).
 #include "sdf_morph/uniforms.glsl"
+
+const float SURFACE_BIAS_FACTOR = 2.0;  // secondary rays start this many hit eps off
+const float MIN_SURFACE_BIAS = 2e-3;
+
+float surfaceBias(float eps) {
+  precise float r_ = dm_max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * eps);
+  return r_;
+}
+
+vec3 reflectDir(vec3 d, vec3 n) {
+  precise vec3 r_ = d - 2.0 * dm_dot(n, d) * n;
+  return r_;
+}
 
 const vec3 KEY_COLOR = vec3(1.0, 0.96, 0.9);
 const vec3 AMBIENT_SKY = vec3(0.22, 0.22, 0.24);

@@ -19,10 +19,6 @@ using glm::vec3;
 
 constexpr float MIN_EPS = 1e-4f;  // object units
 constexpr float NORMAL_EPS = 1e-3f;
-// A reflected ray starts this many hit thresholds off the surface, and at least this far
-// (sdf_morph's own, march.h).
-using sdf_morph::MIN_SURFACE_BIAS;
-using sdf_morph::SURFACE_BIAS_FACTOR;
 const vec3 BOUND_HALF(sdf_morph::OBJECT_BOUND_RADIUS);  // the box around the bounding sphere
 
 // Everything a fragment of the exhibit needs, fixed for the frame.
@@ -68,7 +64,7 @@ float hit_eps(const ExhibitFrame& f, float t) {
 // reflection is, shaded unshadowed and mirroring the probe, or else the hall through the probe.
 vec3 exhibit_reflection(const ExhibitFrame& f, const vec3& p, const vec3& n, const vec3& r,
                         float t_hit) {
-  const vec3 ro = p + n * dm::max(MIN_SURFACE_BIAS, SURFACE_BIAS_FACTOR * hit_eps(f, t_hit));
+  const vec3 ro = p + n * sdf_morph::surfaceBias(hit_eps(f, t_hit));
   const glm::vec2 span = box_span(ro, r);
   float t = dm::max(span.x, 0.0f);
   for (int i = 0; i < f.morph.reflect_steps && t < span.y; ++i) {
