@@ -5,7 +5,8 @@
 // (so the depth test composites it with the hall). Exhibit 1 is the sdf_morph object; plinths 2
 // and 3 hold issue 13's lenticular card and fur (museum/card_exhibit.h, museum/fur_exhibit.h),
 // plugged in through ExhibitPasses; exhibit 4 (crepuscular rays) is the air of the whole hall
-// (museum/atmosphere.h), and its plinth stays bare in the sun by the window.
+// (museum/atmosphere.h); its plinth, in the sun before the window, holds a lattice tower of
+// the hall's boxes that shows the light (museum/lattice_tower.h).
 #include <functional>
 #include <glm/glm.hpp>
 #include <string>

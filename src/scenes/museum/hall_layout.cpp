@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scenes/museum/lattice_tower.h"
 #include "scenes/museum/paintings.h"
 #include "sdf/sdf.h"
 
@@ -80,19 +81,28 @@ void plinths(std::vector<HallBox>& b) {
     const vec3 base = plinth_base(i);
     add(b, base - vec3(PLINTH_HALF, 0.0f, PLINTH_HALF),
         base + vec3(PLINTH_HALF, PLINTH_H, PLINTH_HALF), STONE_ALBEDO, STONE_ROUGHNESS);
-    // The exhibit's label on the plinth's face towards the hall's centre line.
-    const float in = base.z < 0.0f ? 1.0f : -1.0f;
-    const float z = base.z + in * PLINTH_HALF;
-    add(b, {base.x - 0.15f, 0.75f, glm::min(z, z + in * 0.02f)},
-        {base.x + 0.15f, 0.85f, glm::max(z, z + in * 0.02f)}, LABEL_ALBEDO, 0.6f);
+    // The exhibit's label on the plinth's face towards the hall's centre line, or, for the plinth
+    // on that line, towards the door end.
+    const int axis = base.z == 0.0f ? 0 : 2;
+    const float in = axis == 0 ? 1.0f : (base.z < 0.0f ? 1.0f : -1.0f);
+    const int across = 2 - axis;
+    const float face = base[axis] + in * PLINTH_HALF;
+    vec3 lo(0.0f, 0.75f, 0.0f), hi(0.0f, 0.85f, 0.0f);
+    lo[axis] = glm::min(face, face + in * 0.02f), hi[axis] = glm::max(face, face + in * 0.02f);
+    lo[across] = base[across] - 0.15f, hi[across] = base[across] + 0.15f;
+    add(b, lo, hi, LABEL_ALBEDO, 0.6f);
   }
+}
+
+void exhibit_four(std::vector<HallBox>& b) {
+  add_lattice_tower(b, plinth_base(LIGHT_PLINTH) + vec3(0.0f, PLINTH_H, 0.0f));
 }
 
 }  // namespace
 
 glm::vec3 plinth_base(int index) {
   const glm::vec3 bases[PLINTH_COUNT] = {
-      {-3.0f, 0.0f, -1.7f}, {-3.0f, 0.0f, 1.7f}, {1.8f, 0.0f, -1.7f}, {1.8f, 0.0f, 1.7f}};
+      {-3.0f, 0.0f, -1.7f}, {-3.0f, 0.0f, 1.7f}, {1.8f, 0.0f, -1.7f}, {-5.2f, 0.0f, 0.0f}};
   return bases[index];
 }
 
@@ -103,6 +113,7 @@ std::vector<HallBox> hall_boxes() {
   for (int k = 0; k < PAINTING_COUNT; ++k) picture(b, k);
   bench(b);
   plinths(b);
+  exhibit_four(b);
   return b;
 }
 
@@ -111,6 +122,7 @@ std::vector<HallBox> sun_casters() {
   west_wall_with_window(b);
   bench(b);
   plinths(b);
+  exhibit_four(b);
   return b;
 }
 
@@ -122,6 +134,7 @@ std::vector<HallBox> sun_occluders() {
     add(b, base - glm::vec3(PLINTH_HALF, 0.0f, PLINTH_HALF),
         base + glm::vec3(PLINTH_HALF, PLINTH_H, PLINTH_HALF), STONE_ALBEDO, STONE_ROUGHNESS);
   }
+  exhibit_four(b);
   return b;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The museum hall as boxes (all of its geometry is one unit cube mesh, instanced): a room 12 m
 // long (x), 8 m wide (z) and 4 m high, a tall window in the west wall (x = -6) through which the
-// sun comes, a door in the north wall, a bench, four plinths, picture frames and labels.
+// sun comes, a door in the north wall, a bench, four plinths, exhibit 4's lattice tower, picture
+// frames and labels.
 // World units are metres, +Y up, the floor is y = 0.
 #include <glm/glm.hpp>
 #include <vector>
@@ -22,8 +23,11 @@ constexpr float MULLION_Y = 2.5f, MULLION_Z = 0.0f, MULLION_HALF = 0.05f;
 constexpr float PLINTH_HALF = 0.35f;  // plinths are 0.7 x 1.0 x 0.7
 constexpr float PLINTH_H = 1.0f;
 constexpr int PLINTH_COUNT = 4;
-// Plinth centres on the floor: two rows along the hall, exhibit 1 nearest the window.
+// Plinth centres on the floor: exhibits 1 and 2 face each other across the hall halfway to the
+// window, the fur case stands nearer the door, and exhibit 4's plinth stands in the sun before the
+// window, on the hall's centre line.
 glm::vec3 plinth_base(int index);
+constexpr int LIGHT_PLINTH = 3;  // exhibit 4's (museum/lattice_tower.h)
 
 // Material codes of HallBox::material (instance data w): roughness in [0, 1), or a pattern.
 constexpr float MATERIAL_FLOOR = 2.0f;     // oak planks; roughness FLOOR_ROUGHNESS

@@ -13,7 +13,8 @@
 //      (museum/card_exhibit.h: the card's own ray pass, depth tested and written); exhibit 3, the
 //      fur case, on the third (museum/fur_exhibit.h: its mesh passes, scaled onto the plinth);
 //   4. exhibit 4, the air: occlusion from depth -> crepuscular rays -> composite with fog
-//      (museum/atmosphere.h).
+//      (museum/atmosphere.h); its plinth, in the sun before the window, holds a lattice tower
+//      whose bars cut the light into shafts (museum/lattice_tower.h, boxes of the hall).
 //
 // Parameters (besides sdf_morph's, which style exhibit 1: morph_period, rotation_speed, color,
 // reflectivity, environment_intensity; its key light is the museum's sun):
@@ -210,9 +211,10 @@ SceneInfo museum_scene_info() {
       "lenticular_card's ray pass, depth tested against the hall); exhibit 3 is the fur case "
       "(the scene fur's shell-textured shapes, pushed and bouncing, as meshes); exhibit 4 is the "
       "light itself: crepuscular rays (GPU Gems 3, ch. 13) from the window's sky and a distance "
-      "fog.";
+      "fog, with an open white lattice tower on the fourth plinth, in the sun before the window, "
+      "whose bars cut the light into shafts.";
   info.params = museum::params();
-  info.default_camera = CameraPose{{3.5, 1.5, -2.2}, {-4.0, 1.9, 0.0}, 55.0, 0.0};
+  info.default_camera = CameraPose{{4.0, 1.6, 1.7}, {-3.5, 1.05, -1.6}, 55.0, 0.0};
   info.map_ceiling = museum::ROOM_H - 0.05;  // the map looks down from under the ceiling
   info.map_side_view = false;                // a wall
   info.test_poses = museum::test_poses();
