@@ -251,8 +251,14 @@ float submergedLeaf(vec3 w, vec3 rd, out vec3 col) {
   return cover;
 }
 
-vec3 traceReflection(vec3 w, vec3 r, float t_before, float eps_per_t, float pixel_angle,
-                     LilyUniforms u, inout RayStats stats) {
+// reflectedLily() of src/scenes/water_lily/render.cpp: the seed's "lighter color that fits the
+// scene", the lily's colour lit as its sunlit side is.
+vec3 reflectedLily(Surface s, LilyUniforms u) {
+  return s.albedo * (u.sun_color * u.sun_dir.y + AMBIENT_SKY);
+}
+
+vec3 traceReflection(vec3 w, vec3 r, float t_before, float eps_per_t, LilyUniforms u,
+                     inout RayStats stats) {
   precise vec3 sky = skyColor(r, u);
   precise vec2 span = slabSpan(w, r);
   precise float t1 = dm_min(span.y, u.naive != 0 ? u.max_dist : REFLECT_MAX_DIST);
@@ -261,14 +267,13 @@ vec3 traceReflection(vec3 w, vec3 r, float t_before, float eps_per_t, float pixe
                           t_before, false, u, stats);
   if (t == NO_HIT) return sky;
   precise vec3 q = w + r * t;
-  precise vec3 nq = calcNormal(q, normalEps(pixel_angle, t_before + t, u), false, u, stats);
-  precise vec3 col = lightSurface(surfaceAt(q, false, u), nq, r, 1.0, 1.0, u);
+  precise vec3 col = reflectedLily(surfaceAt(q, false, u), u);
   return dm_mix(sky, col, dm_exp(-REFLECT_FALLOFF * t));
 }
 
 vec3 waterNormal(float x, float z, float dist, LilyUniforms u);
 
-vec3 shadeWater(vec3 ro, vec3 rd, float t, float eps_per_t, float pixel_angle, LilyUniforms u,
+vec3 shadeWater(vec3 ro, vec3 rd, float t, float eps_per_t, LilyUniforms u,
                 inout RayStats stats) {
   precise vec3 w = ro + rd * t;
   precise vec3 n = waterNormal(w.x, w.z, t, u);
@@ -277,7 +282,7 @@ vec3 shadeWater(vec3 ro, vec3 rd, float t, float eps_per_t, float pixel_angle, L
   r.y = abs(r.y);
   precise float bias = surfaceBias(hitEps(eps_per_t, t, u));
   precise vec3 wo = vec3(w.x, bias, w.z);
-  precise vec3 mirror = traceReflection(wo, r, t, eps_per_t, pixel_angle, u, stats);
+  precise vec3 mirror = traceReflection(wo, r, t, eps_per_t, u, stats);
   precise float sun = softShadow(wo, u.sun_dir, u.shadow_k, u.shadow_steps, u, stats);
   precise float fill =
       softShadow(wo, u.fill_dir, u.shadow_k * FILL_SHADOW_SOFTNESS, u.shadow_steps / 2, u, stats);
@@ -373,7 +378,7 @@ vec3 sceneRadiance(Ray ray, LilyUniforms u, inout RayStats stats) {
     col = shadeSurface(p, n, rd, surfaceBias(hitEps(eps_per_t, t, u)), u, stats);
     dist = t;
   } else if (water) {
-    col = shadeWater(ro, rd, t_water, eps_per_t, ray.pixel_angle, u, stats);
+    col = shadeWater(ro, rd, t_water, eps_per_t, u, stats);
     dist = t_water;
   } else if (ro.y < 0.0) {
     return grade(underwater(rd), rd, u);

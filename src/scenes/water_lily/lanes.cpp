@@ -65,8 +65,7 @@ void radiancePacket(const RayPacket& rays, const LilyUniforms& u, glm::vec3* out
   traceSecondaryLanes(secondary, rays.count, u, stats);
   for (int i = 0; i < rays.count; ++i) {
     shade[i].rays = secondary[i];
-    const LaneEvalScope lane(stats, i);
-    out[i] = shadeEnd(shade[i], u, stats);
+    out[i] = shadeEnd(shade[i], u);
   }
 }
 

@@ -175,6 +175,14 @@ vec3 lightSurface(const Surface& s, const vec3& n, const vec3& rd, float sun_sha
   return col;
 }
 
+// The seed's reflection of a lily, "a lighter color that fits the scene": the lily's own colour
+// lit as its sunlit side is (the sun from above and the sky), not as its underside. The mirror
+// shows the flower broken by the ripples into patches of its colours; the underside, lit only by
+// the dim ambient and the warm light through the petals, came out a dark reddish-brown.
+vec3 reflectedLily(const Surface& s, const LilyUniforms& u) {
+  return s.albedo * (u.sun_color * u.sun_dir.y + AMBIENT_SKY);
+}
+
 // Height of the water at (x, z): 3D FBM of the position and the water's time coordinate,
 // cross-faded with its wrapped twin near the wrap (uniforms.cpp).
 float waterHeight(float x, float z, const LilyUniforms& u) {
@@ -352,7 +360,7 @@ vec3 radianceAfterMarch(const Ray& ray, const PrimarySpan& s, float t, const Lil
                         RayStats& stats) {
   PixelShade ps = shadeBegin(ray, s, t, u, stats);
   traceSecondary(ps.rays, u, stats);
-  return shadeEnd(ps, u, stats);
+  return shadeEnd(ps, u);
 }
 
 PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
@@ -360,7 +368,6 @@ PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyU
   PixelShade ps;
   const vec3 ro = ray.origin, rd = ray.dir;
   ps.rd = rd;
-  ps.pixel_angle = ray.pixel_angle;
   SecondaryRays& sr = ps.rays;
   if (u.hit_mask) {
     ps.col = t == NO_HIT ? vec3(HIT_ID_NONE)
@@ -440,7 +447,7 @@ void traceSecondary(SecondaryRays& sr, const LilyUniforms& u, RayStats& stats) {
                                 u.shadow_steps / 2, u, stats);
 }
 
-vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u, RayStats& stats) {
+vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u) {
   if (ps.kind == SHADE_DONE) return ps.col;
   const SecondaryRays& sr = ps.rays;
   const vec3 rd = ps.rd;
@@ -454,9 +461,7 @@ vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u, RayStats& stats) {
     if (sr.reflect && sr.reflect_t != NO_HIT) {
       const float t = sr.reflect_t;
       const vec3 q = sr.reflect_origin + r * t;
-      const vec3 nq =
-          calcNormal(q, normalEps(ps.pixel_angle, sr.reflect_t_before + t, u), false, u, stats);
-      const vec3 lit = lightSurface(surfaceAt(q, false, u), nq, r, 1.0f, 1.0f, u);
+      const vec3 lit = reflectedLily(surfaceAt(q, false, u), u);
       mirror = dm::mix(mirror, lit, dm::exp(-REFLECT_FALLOFF * t));
     }
     const float sun = sr.sun_shadow, fill = sr.fill_shadow;

@@ -77,7 +77,7 @@ struct PixelShade {
   int kind = SHADE_DONE;
   glm::vec3 col{0.0f};
   glm::vec3 rd{0.0f};
-  float dist = 0.0f, pixel_angle = 0.0f;
+  float dist = 0.0f;
   glm::vec3 p{0.0f}, n{0.0f};  // the surface's or the water's point and normal
   Surface surface;
   SecondaryRays rays;
@@ -85,6 +85,6 @@ struct PixelShade {
 PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyUniforms& u,
                       RayStats& stats);
 void traceSecondary(SecondaryRays& rays, const LilyUniforms& u, RayStats& stats);
-glm::vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u, RayStats& stats);
+glm::vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u);
 
 }  // namespace sdfreel::water_lily

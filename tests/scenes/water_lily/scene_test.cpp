@@ -173,6 +173,47 @@ TEST(WaterLily, BacklitPetalsGlowWithTheLightThroughThem) {
   EXPECT_GT(glowing, int(img[0].px.size()) / 20) << glowing << " of " << img[0].px.size();
 }
 
+// Seed 001's reflection of a lily is "a lighter color that fits the scene": the water mirroring
+// a white petal's underside shows the petal's own near-white colour, lighter than the sky it
+// hides there (the underside lit as such came out a dark reddish-brown).
+TEST(WaterLily, ReflectedLiliesAreTheirOwnLighterColours) {
+  LilyUniforms u = make_lily_uniforms(context(0.0));
+  u.vignette = 0.0f;  // the ray below is not the camera's
+  RayStats stats;
+  // Flower 0 (white) from below: up from the water beside its axis to an outer petal's underside.
+  const FlowerPlacement& f = FLOWERS[0];
+  vec3 q(f.xz.x + 0.3f, 0.0f, f.xz.y + 0.3f);
+  for (int i = 0; i < 200; ++i) {
+    const float d = mapScene(q, false, u, stats);
+    if (d < 1e-4f) break;
+    q.y += d;
+  }
+  ASSERT_LT(mapScene(q, false, u, stats), 1e-3f);
+  ASSERT_GT(q.y, 0.0f);
+  // A water point in front of it and the mirror's geometry: the ray from the eye meets the water
+  // at w, at a grazing angle (where the water mirrors most), and goes on up along r to q.
+  const vec3 w(q.x, 0.0f, q.z + 2.0f);
+  const vec3 r = glm::normalize(q - w);
+  PixelShade ps;
+  ps.kind = SHADE_WATER;
+  ps.rd = vec3(r.x, -r.y, r.z);
+  ps.dist = 2.0f;
+  ps.p = w;
+  ps.n = vec3(0.0f, 1.0f, 0.0f);
+  ps.rays.reflect = true;
+  ps.rays.reflect_origin = w;
+  ps.rays.reflect_dir = r;
+  ps.rays.sun_shadow = ps.rays.fill_shadow = 1.0f;
+  ps.rays.reflect_t = glm::length(q - w);
+  const vec3 lily = shadeEnd(ps, u);
+  ps.rays.reflect_t = NO_HIT;
+  const vec3 sky = shadeEnd(ps, u);
+  const vec3 luma(0.2126f, 0.7152f, 0.0722f);
+  EXPECT_GT(glm::dot(lily, luma), glm::dot(sky, luma)) << "lighter than the sky it hides";
+  EXPECT_GT(lily.g / lily.r, 0.8f) << "near-white, not reddish: " << lily.r << " " << lily.g;
+  EXPECT_GT(lily.b / lily.r, 0.7f) << lily.r << " " << lily.b;
+}
+
 TEST(WaterLily, HugeTimeKeepsAnimating) {
   const LilyUniforms a = make_lily_uniforms(context(1e6));
   const LilyUniforms b = make_lily_uniforms(context(1e6 + 1.0 / 30.0));
