@@ -16,6 +16,7 @@ struct LilyUniforms {
   vec3 fill_dir;
   float water_bump;
   float translucency;
+  float droplets;
   float contrast;
   float saturation;
   float vignette;

@@ -6,6 +6,7 @@
 #include "common/noise.glsl"
 #include "water_lily/geometry.glsl"
 #include "water_lily/look.glsl"
+#include "water_lily/droplets.glsl"
 
 uniform LilyUniforms u_lily;
 
@@ -147,36 +148,63 @@ struct Surface {
   vec3 albedo;
   float translucent;
   float shininess;
+  float specular;
+  vec3 tilt;
 };
 
-Surface surfaceAt(vec3 p, bool leaves, LilyUniforms u) {
-  Nearest n = mapNearest(p, u, BOUND_MARGIN, leaves);
-  if (n.flower >= 0) {
-    precise vec3 q = toFlower(p, n.flower);
+// addDroplet() of src/scenes/water_lily/render.cpp: a water drop's dome, ring, caustic and
+// highlight.
+Surface addDroplet(Surface s, Droplet d, LilyUniforms u) {
+  if (!(d.cover > 0.0)) return s;
+  precise vec2 o = d.offset;
+  precise float r = sqrt(o.x * o.x + o.y * o.y);
+  s.tilt = vec3(o.x, 0.0, o.y) * (DROP_SLOPE * d.cover);
+  precise float ring = dm_smoothstep(DROP_RING, 1.0, r);
+  precise float caustic = dm_max(-(o.x * u.sun_dir.x + o.y * u.sun_dir.z), 0.0) * (1.0 - r);
+  precise vec3 under = s.albedo * (1.0 - DROP_RING_DARK * ring + DROP_CAUSTIC * caustic);
+  s.albedo = dm_mix(s.albedo, under, d.cover);
+  s.shininess = DROP_SHININESS;
+  s.specular = dm_mix(s.specular, DROP_SPECULAR, d.cover);
+  return s;
+}
+
+Surface surfaceAt(vec3 p, vec3 n, bool leaves, LilyUniforms u) {
+  Nearest near = mapNearest(p, u, BOUND_MARGIN, leaves);
+  if (near.flower >= 0) {
+    precise vec3 q = toFlower(p, near.flower);
     precise float center = flowerCenter(q);
-    FlowerPlacement fl = FLOWERS[n.flower];
+    FlowerPlacement fl = FLOWERS[near.flower];
     if (center < CENTER_COLOR_REACH)
       return Surface(dm_mix(CENTER_DEEP, CENTER_YELLOW,
                             dm_smoothstep(0.0, CENTER_RADIUS, q.y - CENTER_Y + CENTER_RADIUS)),
-                     0.0, 0.0);
+                     0.0, 0.0, 0.0, vec3(0.0));
     int layer = 0;
-    precise float best = petalLayer(q, 0, fl.turn, u.curl[n.flower], u).x;
+    precise float best = petalLayer(q, 0, fl.turn, u.curl[near.flower], u).x;
     for (int l = 1; l < PETAL_LAYERS; ++l) {
-      precise float d = petalLayer(q, l, fl.turn, u.curl[n.flower], u).x;
+      precise float d = petalLayer(q, l, fl.turn, u.curl[near.flower], u).x;
       if (d < best) {
         best = d;
         layer = l;
       }
     }
     precise float along = sqrt(q.x * q.x + q.z * q.z + q.y * q.y) / PETAL_TIP_REACH;
-    return Surface(petalAlbedo(n.flower, along, layer), 1.0, 0.0);
+    Surface s = Surface(petalAlbedo(near.flower, along, layer), 1.0, 0.0, 0.0, vec3(0.0));
+    precise vec2 plan = vec2(p.x - fl.xz.x, p.z - fl.xz.y);
+    return addDroplet(
+        s, dropletAt(plan, DROP_SEED + uint(near.flower), DROP_SHARE_PETAL * u.droplets, n.y), u);
   }
-  int leaf = n.leaf >= 0 ? n.leaf : 0;
-  return Surface(leafAlbedo(leaf, toLeaf(p, leaf, u)), 0.0, LEAF_SHININESS);
+  int leaf = near.leaf >= 0 ? near.leaf : 0;
+  Surface s =
+      Surface(leafAlbedo(leaf, toLeaf(p, leaf, u)), 0.0, LEAF_SHININESS, LEAF_SPECULAR, vec3(0.0));
+  precise vec2 c = leafCenter(leaf, u);
+  uint seed = DROP_SEED + uint(FLOWER_COUNT + leaf);
+  return addDroplet(
+      s, dropletAt(vec2(p.x - c.x, p.z - c.y), seed, DROP_SHARE_PAD * u.droplets, n.y), u);
 }
 
-vec3 lightSurface(Surface s, vec3 n, vec3 rd, float sun_shadow, float fill_shadow,
+vec3 lightSurface(Surface s, vec3 surface_n, vec3 rd, float sun_shadow, float fill_shadow,
                   LilyUniforms u) {
+  precise vec3 n = safe_normalize(surface_n + s.tilt);
   precise float ndl = dm_max(dm_dot(n, u.sun_dir), 0.0);
   precise float fill = dm_max(dm_dot(n, u.fill_dir), 0.0);
   precise float sky = 0.6 + 0.4 * n.y;
@@ -191,7 +219,7 @@ vec3 lightSurface(Surface s, vec3 n, vec3 rd, float sun_shadow, float fill_shado
   }
   if (s.shininess > 0.0) {
     precise float h = dm_max(dm_dot(reflectDir(rd, n), u.sun_dir), 0.0);
-    col = col + u.sun_color * (LEAF_SPECULAR * dm_pow(h, s.shininess) * sun_shadow);
+    col = col + u.sun_color * (s.specular * dm_pow(h, s.shininess) * sun_shadow);
   }
   return col;
 }
@@ -209,7 +237,7 @@ vec3 throughPetal(vec3 p, vec3 n, float bias, LilyUniforms u, inout RayStats sta
 }
 
 vec3 shadeSurface(vec3 p, vec3 n, vec3 rd, float bias, LilyUniforms u, inout RayStats stats) {
-  Surface s = surfaceAt(p, true, u);
+  Surface s = surfaceAt(p, n, true, u);
   precise vec3 o = p + n * bias;
   bool sun_side = dm_dot(n, u.sun_dir) > 0.0 || s.translucent > 0.0;
   precise vec3 os = dm_dot(n, u.sun_dir) > 0.0 ? o : throughPetal(p, n, bias, u, stats);
@@ -267,7 +295,7 @@ vec3 traceReflection(vec3 w, vec3 r, float t_before, float eps_per_t, LilyUnifor
                           t_before, false, u, stats);
   if (t == NO_HIT) return sky;
   precise vec3 q = w + r * t;
-  precise vec3 col = reflectedLily(surfaceAt(q, false, u), u);
+  precise vec3 col = reflectedLily(surfaceAt(q, vec3(0.0), false, u), u);
   return dm_mix(sky, col, dm_exp(-REFLECT_FALLOFF * t));
 }
 

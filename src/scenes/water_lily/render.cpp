@@ -2,6 +2,7 @@
 
 #include "scenes/common/relaxed_march.h"
 #include "scenes/common/surface_output.h"
+#include "scenes/water_lily/droplets.h"
 #include "scenes/water_lily/geometry.h"
 #include "scenes/water_lily/look.h"
 #include "scenes/water_lily/shadow.h"
@@ -124,37 +125,65 @@ vec3 leafAlbedo(int i, const vec3& q) {
   return dm::mix(col, LEAF_RIM, dm::smoothstep(0.9f, 1.0f, rho / radius) * LEAF_RIM_WEIGHT);
 }
 
-// Colour of the marched surface at p: which part, its albedo, and whether light shines through.
-Surface surfaceAt(const vec3& p, bool leaves, const LilyUniforms& u) {
-  const Nearest n = mapNearest(p, u, BOUND_MARGIN, leaves);
-  if (n.flower >= 0) {
-    const vec3 q = toFlower(p, n.flower);
+// A water drop on the surface (water_lily/droplets.h): its dome tilts the normal, most at the rim
+// (the sharp highlight of the sun moves over it); under it, light bent away darkens a ring at the
+// rim and gathers on the side away from the sun (the caustic); the water's highlight replaces the
+// surface's own.
+void addDroplet(Surface& s, const Droplet& d, const LilyUniforms& u) {
+  if (!(d.cover > 0.0f)) return;
+  const vec2 o = d.offset;
+  const float r = dm::sqrt(o.x * o.x + o.y * o.y);
+  s.tilt = vec3(o.x, 0.0f, o.y) * (DROP_SLOPE * d.cover);
+  const float ring = dm::smoothstep(DROP_RING, 1.0f, r);
+  const float caustic = dm::max(-(o.x * u.sun_dir.x + o.y * u.sun_dir.z), 0.0f) * (1.0f - r);
+  const vec3 under = s.albedo * (1.0f - DROP_RING_DARK * ring + DROP_CAUSTIC * caustic);
+  s.albedo = dm::mix(s.albedo, under, d.cover);
+  s.shininess = DROP_SHININESS;
+  s.specular = dm::mix(s.specular, DROP_SPECULAR, d.cover);
+}
+
+// Colour of the marched surface at p with normal n: which part, its albedo, whether light shines
+// through, and the water drops on it (none for n = 0: the lilies the water mirrors).
+Surface surfaceAt(const vec3& p, const vec3& n, bool leaves, const LilyUniforms& u) {
+  const Nearest near = mapNearest(p, u, BOUND_MARGIN, leaves);
+  if (near.flower >= 0) {
+    const vec3 q = toFlower(p, near.flower);
     const float center = flowerCenter(q);
-    const FlowerPlacement& fl = FLOWERS[n.flower];
+    const FlowerPlacement& fl = FLOWERS[near.flower];
     if (center < CENTER_COLOR_REACH)
       return Surface{dm::mix(CENTER_DEEP, CENTER_YELLOW,
                              dm::smoothstep(0.0f, CENTER_RADIUS, q.y - CENTER_Y + CENTER_RADIUS)),
-                     0.0f, 0.0f};
+                     0.0f, 0.0f, 0.0f, vec3(0.0f)};
     int layer = 0;
-    float best = petalLayer(q, 0, fl.turn, u.curl[n.flower], u).x;
+    float best = petalLayer(q, 0, fl.turn, u.curl[near.flower], u).x;
     for (int l = 1; l < PETAL_LAYERS; ++l) {
-      const float d = petalLayer(q, l, fl.turn, u.curl[n.flower], u).x;
+      const float d = petalLayer(q, l, fl.turn, u.curl[near.flower], u).x;
       if (d < best) {
         best = d;
         layer = l;
       }
     }
     const float along = dm::sqrt(q.x * q.x + q.z * q.z + q.y * q.y) / PETAL_TIP_REACH;
-    return Surface{petalAlbedo(n.flower, along, layer), 1.0f, 0.0f};
+    Surface s{petalAlbedo(near.flower, along, layer), 1.0f, 0.0f, 0.0f, vec3(0.0f)};
+    const vec2 plan(p.x - fl.xz.x, p.z - fl.xz.y);
+    addDroplet(
+        s, dropletAt(plan, DROP_SEED + uint32_t(near.flower), DROP_SHARE_PETAL * u.droplets, n.y),
+        u);
+    return s;
   }
-  const int leaf = n.leaf >= 0 ? n.leaf : 0;
-  return Surface{leafAlbedo(leaf, toLeaf(p, leaf, u)), 0.0f, LEAF_SHININESS};
+  const int leaf = near.leaf >= 0 ? near.leaf : 0;
+  Surface s{leafAlbedo(leaf, toLeaf(p, leaf, u)), 0.0f, LEAF_SHININESS, LEAF_SPECULAR, vec3(0.0f)};
+  const vec2 c = leafCenter(leaf, u);
+  const uint32_t seed = DROP_SEED + uint32_t(FLOWER_COUNT + leaf);
+  addDroplet(s, dropletAt(vec2(p.x - c.x, p.z - c.y), seed, DROP_SHARE_PAD * u.droplets, n.y), u);
+  return s;
 }
 
 // The seed's environment light: ambient from the sky and a diffuse term per light, each light
 // with its soft shadow; petals also pass the sun through (translucency).
-vec3 lightSurface(const Surface& s, const vec3& n, const vec3& rd, float sun_shadow,
+vec3 lightSurface(const Surface& s, const vec3& surface_n, const vec3& rd, float sun_shadow,
                   float fill_shadow, const LilyUniforms& u) {
+  const vec3 n = safe_normalize(surface_n + s.tilt);
   const float ndl = dm::max(glm::dot(n, u.sun_dir), 0.0f);
   const float fill = dm::max(glm::dot(n, u.fill_dir), 0.0f);
   const float sky = 0.6f + 0.4f * n.y;
@@ -170,7 +199,7 @@ vec3 lightSurface(const Surface& s, const vec3& n, const vec3& rd, float sun_sha
   }
   if (s.shininess > 0.0f) {
     const float h = dm::max(glm::dot(reflectDir(rd, n), u.sun_dir), 0.0f);
-    col = col + u.sun_color * (LEAF_SPECULAR * dm::pow(h, s.shininess) * sun_shadow);
+    col = col + u.sun_color * (s.specular * dm::pow(h, s.shininess) * sun_shadow);
   }
   return col;
 }
@@ -396,7 +425,7 @@ PixelShade shadeBegin(const Ray& ray, const PrimarySpan& s, float t, const LilyU
     ps.dist = t;
     ps.p = ro + rd * t;
     ps.n = calcNormal(ps.p, normalEps(ray.pixel_angle, t, u), true, u, stats);
-    ps.surface = surfaceAt(ps.p, true, u);
+    ps.surface = surfaceAt(ps.p, ps.n, true, u);
     const float bias = surfaceBias(hitEps(s.eps_per_t, t, u));
     const vec3 o = ps.p + ps.n * bias;
     sr.sun = glm::dot(ps.n, u.sun_dir) > 0.0f || ps.surface.translucent > 0.0f;
@@ -461,7 +490,7 @@ vec3 shadeEnd(const PixelShade& ps, const LilyUniforms& u) {
     if (sr.reflect && sr.reflect_t != NO_HIT) {
       const float t = sr.reflect_t;
       const vec3 q = sr.reflect_origin + r * t;
-      const vec3 lit = reflectedLily(surfaceAt(q, false, u), u);
+      const vec3 lit = reflectedLily(surfaceAt(q, vec3(0.0f), false, u), u);
       mirror = dm::mix(mirror, lit, dm::exp(-REFLECT_FALLOFF * t));
     }
     const float sun = sr.sun_shadow, fill = sr.fill_shadow;

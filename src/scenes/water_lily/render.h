@@ -69,6 +69,8 @@ struct Surface {
   glm::vec3 albedo{0.0f};
   float translucent = 0.0f;  // 0 opaque .. 1 a thin petal
   float shininess = 0.0f;    // 0: no highlight
+  float specular = 0.0f;     // the highlight's weight
+  glm::vec3 tilt{0.0f};      // added to the normal before lighting (a water drop's dome)
 };
 constexpr int SHADE_DONE = 0;  // sky, underwater or hit mask: col is the answer
 constexpr int SHADE_SURFACE = 1;

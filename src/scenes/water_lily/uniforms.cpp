@@ -72,6 +72,7 @@ LilyUniforms make_lily_uniforms(const FrameContext& ctx) {
   u.fill_dir = unit(glm::vec3(-0.25f, 1.0f, -0.35f));
   u.water_bump = float(pv.scalar("water_bump"));
   u.translucency = float(pv.scalar("petal_translucency"));
+  u.droplets = float(pv.scalar("droplets"));
   u.contrast = float(pv.scalar("contrast"));
   u.saturation = float(pv.scalar("saturation"));
   u.vignette = float(pv.scalar("vignette"));
@@ -104,6 +105,7 @@ std::vector<ShaderUniform> lily_shader_uniforms(const LilyUniforms& u) {
       .v3("fill_dir", u.fill_dir)
       .f("water_bump", u.water_bump)
       .f("translucency", u.translucency)
+      .f("droplets", u.droplets)
       .f("contrast", u.contrast)
       .f("saturation", u.saturation)
       .f("vignette", u.vignette)

@@ -29,6 +29,7 @@ struct LilyUniforms {
   glm::vec3 fill_dir{0, 1, 0};  // unit, the sky's fill light
   float water_bump = 1;
   float translucency = 0.5f;
+  float droplets = 1.0f;  // scales the share of grid cells with a water drop (droplets.h)
   float contrast = 0.3f;
   float saturation = 1.1f;
   float vignette = 0.45f;

@@ -3,7 +3,7 @@
 // calmer far away; the water mirrors the lilies and the FBM-lit sky through a Fresnel term. Soft
 // shadows (Quilez's improved form) from the sun and the sky's fill light, contrast, saturation,
 // vignette and distance fog as in the seed. Beyond the seed: coloured centres, translucent petals,
-// curled pad rims and submerged pads.
+// curled pad rims, submerged pads and water drops.
 //
 // Parameters (`sdfreel scenes water_lily`):
 //   curl_amount         petal curl rate; each flower swings around it with its own phase
@@ -15,6 +15,7 @@
 //   sun_color,          the sun's colour and irradiance
 //     sun_intensity
 //   petal_translucency  share of the sun that shines through a backlit petal
+//   droplets            how many water drops sit on the pads and petals (0: none, 1: the look)
 //   shadow_softness     penumbra sharpness k of the soft shadows
 //   fog_distance        metres where the distance fog is complete
 //   contrast            the seed's contrast curve mixed in, 0..1
@@ -71,7 +72,7 @@ SceneInfo water_lily_scene_info() {
       "Worley texture float on animated water. The water's normal is bumped by time-dependent 3D "
       "FBM that calms with distance; it mirrors the lilies and the FBM-lit sky through a Fresnel "
       "term. Soft shadows from the sun and the sky, translucent petals, curled and submerged "
-      "pads, contrast, saturation, vignette and distance fog.";
+      "pads, water drops on pads and petals, contrast, saturation, vignette and distance fog.";
   info.params = {
       scalar("curl_amount", 1.0, 0.0, 1.6,
              "petal curl rate (radians per unit of petal length, times each layer's share)"),
@@ -85,6 +86,8 @@ SceneInfo water_lily_scene_info() {
       scalar("sun_intensity", 1.6, 0.0, 10.0, "irradiance of the sun"),
       scalar("petal_translucency", 0.6, 0.0, 1.0,
              "share of the sunlight that shines through a backlit petal"),
+      scalar("droplets", 1.0, 0.0, 2.0,
+             "how many water drops sit on the pads and petals, as a share of the default; 0: none"),
       scalar("shadow_softness", 10.0, 1.0, 128.0,
              "penumbra sharpness k of the soft shadows: small = soft, large = hard"),
       scalar("fog_distance", 28.0, 1.0, 500.0, "metres where the distance fog is complete"),
