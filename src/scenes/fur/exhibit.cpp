@@ -36,11 +36,6 @@ std::vector<MeshInstance> case_boxes(const glm::mat4& model) {
           box_instance(model, {x + 0.02f, h, 0.0f}, {0.02f, h, z}, CASE_COLOUR)};
 }
 
-glm::mat3 rotation_y(double angle) {
-  const float c = dm::cos(float(angle)), s = dm::sin(float(angle));
-  return glm::mat3(glm::vec3(c, 0.0f, -s), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(s, 0.0f, c));
-}
-
 MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook& fur,
                     const ExhibitParams& p, const CaseLook& light) {
   const glm::mat3 to_world(model);
@@ -49,7 +44,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   pass.name = std::string("fur shells ") + FUR_PREFIXES[int(body.shape)];
   pass.mesh = shape_mesh(body.shape);
   const glm::mat4 body_model =
-      glm::scale(glm::translate(model, glm::vec3(body.position)) * glm::mat4(rotation_y(body.yaw)),
+      glm::scale(glm::translate(model, glm::vec3(body.position)) * glm::mat4(glm::mat3(body.turn)),
                  glm::vec3(float(body.scale)));
   const int n = std::max(1, int(std::lround(fur.shells)));
   pass.instances.clear();
@@ -58,8 +53,9 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
   ShellMotion m;
   m.length = float(fur.length) * world_scale;
   m.centre = glm::vec3(model * glm::vec4(glm::vec3(body.position), 1.0f));
-  const double twist = std::clamp(body.fur_twist, -MAX_TWIST, MAX_TWIST);
-  m.twist = to_world * rotation_y(twist) * glm::inverse(to_world);
+  glm::dvec3 twist = body.fur_twist;
+  if (glm::length(twist) > MAX_TWIST) twist *= MAX_TWIST / glm::length(twist);
+  m.twist = to_world * glm::mat3(rotation(twist)) * glm::inverse(to_world);
   glm::dvec3 lag = body.fur_lag;
   if (glm::length(lag) > MAX_LAG) lag *= MAX_LAG / glm::length(lag);
   m.offset = to_world * glm::vec3(lag * p.displacement_strength);
@@ -131,7 +127,8 @@ CaseLook exhibit_look(const glm::mat4& model, const ExhibitParams& p, const Exhi
   for (int i = 0; i < BODY_COUNT; ++i) {
     const BodyPose& b = pose[size_t(i)];
     const glm::vec3 c(model * glm::vec4(glm::vec3(b.position), 1.0f));
-    const float r = float(support_side(b.shape, b.scale, 0.0) + p.looks[size_t(i)].length * 0.5);
+    const float r =
+        float(support(b.shape, b.scale, glm::dmat3(1.0), 0) + p.looks[size_t(i)].length * 0.5);
     look.bodies[size_t(i)] = glm::vec4(c, r * world_scale);
   }
   return look;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/gtc/quaternion.hpp>
 #include <vector>
 
 #include "scenes/fur/spring.h"
@@ -21,16 +22,57 @@ constexpr double FLOOR_BOUNCE = 0.5, WALL_BOUNCE = 0.6, BODY_BOUNCE = 0.5, REST_
 constexpr double IMPACT_FRICTION = 0.8, IMPACT_SPIN = 0.7;
 constexpr double SLIDE_DRAG = 2.5, SPIN_DRAG = 3.0;  // 1/s, while on the floor
 constexpr double SLEEP_SPEED = 0.05, SLEEP_SPIN = 0.1;
-// A push: this upward speed, a sideways speed in a direction hashed from (push, body), a spin.
-constexpr double PUSH_UP = 2.2, PUSH_SIDE = 0.5, PUSH_SPIN = 10.0;
+// A push: this upward speed, a sideways speed in a direction hashed from (push, body), a spin
+// about the vertical and a tumble about the horizontal axis across the path (rad/s at most).
+constexpr double PUSH_UP = 2.2, PUSH_SIDE = 0.5, PUSH_SPIN = 10.0, PUSH_TUMBLE = 12.0;
+// On the floor a tilted shape rights itself with this angular acceleration (rad/s^2) times the sine
+// of its tilt; below FLAT_TILT it lies flat, and falling asleep lays it exactly so.
+constexpr double RIGHTING = 60.0, FLAT_TILT = 0.02;
+const glm::dvec3 UP(0.0, 1.0, 0.0);
 
 struct Body {
   Shape shape = Shape::Sphere;
   glm::dvec3 p{0.0}, v{0.0};
-  double yaw = 0.0, spin = 0.0, scale = 1.0;
+  glm::dquat q{1.0, 0.0, 0.0, 0.0};  // orientation
+  glm::dvec3 w{0.0};                 // angular velocity, rad/s, exhibit space
+  double scale = 1.0;
   bool asleep = true, on_floor = true;
-  SpringState lag[3], twist;
+  SpringState lag[3], twist[3];
 };
+
+// The rotation by `angle` about the unit `axis`, from the series (|angle| < 4).
+glm::dquat about(const glm::dvec3& axis, double angle) {
+  const double s = series_sin(0.5 * angle);
+  return glm::dquat(series_cos(0.5 * angle), axis.x * s, axis.y * s, axis.z * s);
+}
+
+glm::dmat3 turn_of(const Body& b) {
+  return glm::mat3_cast(b.q);
+}
+
+double extent(const Body& b, int axis) {
+  return support(b.shape, b.scale, turn_of(b), axis);
+}
+
+// The axis that points up when the shape lies still, signed upwards: the cube's local axis nearest
+// the vertical, the torus' own axis; none (zero) for the sphere, which lies still any way.
+glm::dvec3 rest_axis(const Body& b) {
+  if (b.shape == Shape::Sphere) return glm::dvec3(0.0);
+  const glm::dmat3 r = turn_of(b);
+  int best = 1;
+  if (b.shape == Shape::RoundedCube)
+    for (int i = 0; i < 3; ++i)
+      if (std::fabs(r[i].y) > std::fabs(r[best].y)) best = i;
+  return r[best].y < 0.0 ? -r[best] : r[best];
+}
+
+// Turned so that its rest axis points straight up (the half-way quaternion from that axis to up).
+void lay_flat(Body& b) {
+  if (b.shape == Shape::Sphere) return;
+  const glm::dvec3 a = rest_axis(b);
+  const glm::dvec3 c = glm::cross(a, UP);
+  b.q = glm::normalize(glm::dquat(1.0 + a.y, c.x, c.y, c.z) * b.q);
+}
 
 glm::dvec3 rest_lag() {
   return glm::dvec3(0.0, -GRAVITY / (SPRING_OMEGA * SPRING_OMEGA), 0.0);
@@ -40,27 +82,35 @@ double scale_of(Shape s, const PhysicsInputs& in, double t) {
   return s == Shape::Sphere ? sphere_scale(in, t) : 1.0;
 }
 
-// The radius of a shape's footprint on the floor, for collisions between shapes.
+// The radius of a shape's footprint on the floor, for collisions between shapes: the cube's
+// widest (across its diagonal), the others' at any turn.
 double footprint(const Body& b) {
-  return support_side(b.shape, b.scale, 0.7853981633974483);  // the cube's widest
+  const double widest[3] = {SPHERE_RADIUS,
+                            (CUBE_HALF - CUBE_ROUNDING) * 1.4142135623730951 + CUBE_ROUNDING,
+                            TORUS_MAJOR + TORUS_MINOR};
+  return widest[int(b.shape)] * b.scale;
 }
 
 void settle(Body& b, double t, const PhysicsInputs& in) {
   b.scale = scale_of(b.shape, in, t);
-  b.p.y = support_down(b.shape, b.scale);
-  const double side = support_side(b.shape, b.scale, b.yaw);
-  b.p.x = std::clamp(b.p.x, -CASE_HALF_X + side, CASE_HALF_X - side);
-  b.p.z = std::clamp(b.p.z, -CASE_HALF_Z + side, CASE_HALF_Z - side);
+  b.p.y = extent(b, 1);
+  const double x = extent(b, 0), z = extent(b, 2);
+  b.p.x = std::clamp(b.p.x, -CASE_HALF_X + x, CASE_HALF_X - x);
+  b.p.z = std::clamp(b.p.z, -CASE_HALF_Z + z, CASE_HALF_Z - z);
 }
 
 void push(Body& b, int push_index, int body, double strength) {
   const glm::uvec2 h = pcg2d(glm::uvec2(uint32_t(push_index), uint32_t(body)));
   const double a = double(h.x >> 8u) / 16777216.0 * 6.283185307179586;
   const double spin = double(h.y >> 8u) / 16777216.0 - 0.5;
+  const double tumble = double(pcg2d(h).x >> 8u) / 16777216.0 * 2.0 - 1.0;
   b.asleep = false;
-  b.v += strength * glm::dvec3(PUSH_SIDE * double(dm::cos(float(a))), PUSH_UP,
-                               PUSH_SIDE * double(dm::sin(float(a))));
-  b.spin += strength * PUSH_SPIN * spin;
+  const glm::dvec3 side(double(dm::cos(float(a))), 0.0, double(dm::sin(float(a))));
+  b.v += strength * glm::dvec3(PUSH_SIDE * side.x, PUSH_UP, PUSH_SIDE * side.z);
+  // Struck off its centre it tumbles forwards or backwards about the axis across its path, up x
+  // side.
+  b.w +=
+      strength * (PUSH_SPIN * spin * UP + PUSH_TUMBLE * tumble * glm::dvec3(side.z, 0.0, -side.x));
 }
 
 void wall(double& p, double& v, double limit) {
@@ -78,23 +128,24 @@ void move(Body& b, double t_next, const PhysicsInputs& in, double slide, double 
   if (b.asleep) return settle(b, t_next, in);
   b.v.y -= GRAVITY * DT;
   b.p += b.v * DT;
-  b.yaw += b.spin * DT;
-  const double down = support_down(b.shape, b.scale);
+  const double speed = std::sqrt(glm::dot(b.w, b.w));
+  if (speed > 0.0) b.q = glm::normalize(about(b.w / speed, speed * DT) * b.q);
+  const double down = extent(b, 1);
   b.on_floor = b.p.y <= down;
   if (b.on_floor) {
     b.p.y = down;
     if (b.v.y < -REST_SPEED) {
       b.v.y = -FLOOR_BOUNCE * b.v.y;
-      b.v.x *= IMPACT_FRICTION, b.v.z *= IMPACT_FRICTION, b.spin *= IMPACT_SPIN;
+      b.v.x *= IMPACT_FRICTION, b.v.z *= IMPACT_FRICTION, b.w *= IMPACT_SPIN;
     } else {
       b.v.y = std::max(b.v.y, 0.0);
     }
-    b.v.x *= slide, b.v.z *= slide, b.spin *= spin_drag;
+    b.v.x *= slide, b.v.z *= slide, b.w *= spin_drag;
+    b.w += (RIGHTING * DT) * glm::cross(rest_axis(b), UP);  // a tilted shape rights itself
   }
   if (b.p.y > CASE_HEIGHT - down) b.p.y = CASE_HEIGHT - down, b.v.y = -std::fabs(b.v.y);
-  const double side = support_side(b.shape, b.scale, b.yaw);
-  wall(b.p.x, b.v.x, CASE_HALF_X - side);
-  wall(b.p.z, b.v.z, CASE_HALF_Z - side);
+  wall(b.p.x, b.v.x, CASE_HALF_X - extent(b, 0));
+  wall(b.p.z, b.v.z, CASE_HALF_Z - extent(b, 2));
 }
 
 // Shapes meet as discs on the floor plane (when their heights overlap): pushed apart, and their
@@ -104,7 +155,7 @@ void collide(Body& a, Body& b) {
   const glm::dvec2 d(b.p.x - a.p.x, b.p.z - a.p.z);
   const double reach = footprint(a) + footprint(b);
   const double dist = std::sqrt(d.x * d.x + d.y * d.y);
-  const double tall = support_down(a.shape, a.scale) + support_down(b.shape, b.scale);
+  const double tall = extent(a, 1) + extent(b, 1);
   if (dist >= reach || dist == 0.0 || std::fabs(b.p.y - a.p.y) >= tall) return;
   const glm::dvec2 n = d / dist;
   const double half = 0.5 * (reach - dist);
@@ -133,10 +184,12 @@ struct Simulation {
       for (int j = i + 1; j < BODY_COUNT; ++j) collide(bodies[size_t(i)], bodies[size_t(j)]);
     for (size_t i = 0; i < bodies.size(); ++i) {
       Body& b = bodies[i];
-      const bool slow = glm::length(b.v) < SLEEP_SPEED && std::fabs(b.spin) < SLEEP_SPIN;
-      if (!b.asleep && ((b.on_floor && slow) || since_push >= SLEEP_AFTER)) {
+      const bool slow = glm::length(b.v) < SLEEP_SPEED && glm::length(b.w) < SLEEP_SPIN;
+      const bool flat = glm::length(glm::cross(rest_axis(b), UP)) < FLAT_TILT;
+      if (!b.asleep && ((b.on_floor && slow && flat) || since_push >= SLEEP_AFTER)) {
         b.asleep = true;
-        b.v = glm::dvec3(0.0), b.spin = 0.0;
+        b.v = glm::dvec3(0.0), b.w = glm::dvec3(0.0);
+        lay_flat(b);
         settle(b, t + DT, in);
       }
       // The fur's drive: gravity minus the body's acceleration over this step.
@@ -144,24 +197,26 @@ struct Simulation {
       const glm::dvec3 goal =
           (glm::dvec3(0.0, -GRAVITY, 0.0) - accel) / (SPRING_OMEGA * SPRING_OMEGA);
       for (int c = 0; c < 3; ++c) b.lag[c] = spring_step(spring, b.lag[c], goal[c]);
-      const double alpha = (b.spin - before[i].spin) / DT;
-      b.twist = spring_step(spring, b.twist, -alpha / (SPRING_OMEGA * SPRING_OMEGA));
+      const glm::dvec3 alpha = (b.w - before[i].w) / DT;
+      for (int c = 0; c < 3; ++c)
+        b.twist[c] = spring_step(spring, b.twist[c], -alpha[c] / (SPRING_OMEGA * SPRING_OMEGA));
       if (since_push >= SETTLE_AFTER) snap(b);
     }
   }
 
   static void snap(Body& b) {
     const glm::dvec3 rest = rest_lag();
-    for (int c = 0; c < 3; ++c) b.lag[c] = {rest[c], 0.0};
-    b.twist = {};
+    for (int c = 0; c < 3; ++c) b.lag[c] = {rest[c], 0.0}, b.twist[c] = {};
   }
 
   bool quiet() const {
     const glm::dvec3 rest = rest_lag();
     for (const Body& b : bodies) {
-      if (!b.asleep || b.twist.x != 0.0 || b.twist.v != 0.0) return false;
+      if (!b.asleep) return false;
       for (int c = 0; c < 3; ++c)
-        if (b.lag[c].x != rest[c] || b.lag[c].v != 0.0) return false;
+        if (b.lag[c].x != rest[c] || b.lag[c].v != 0.0 || b.twist[c].x != 0.0 ||
+            b.twist[c].v != 0.0)
+          return false;
     }
     return true;
   }
@@ -174,7 +229,7 @@ std::vector<Body> rest_bodies(const PhysicsInputs& in, double t) {
     Body b;
     b.shape = SHAPES[i];
     b.p = glm::dvec3(HOME_X[i], 0.0, HOME_Z[i]);
-    b.yaw = HOME_YAW[i];
+    b.q = about(UP, HOME_YAW[i]);
     for (int c = 0; c < 3; ++c) b.lag[c] = {lag[c], 0.0};
     settle(b, t, in);
     out.push_back(b);
@@ -191,10 +246,14 @@ ExhibitPose blend(const std::vector<Body>& a, const std::vector<Body>& b, double
     BodyPose& p = out[size_t(i)];
     p.shape = x.shape;
     p.position = x.p + (y.p - x.p) * f;
-    p.yaw = x.yaw + (y.yaw - x.yaw) * f;
+    // Between the two steps' orientations: the normalised blend of the nearer pair of quaternions.
+    const glm::dquat qy = glm::dot(x.q, y.q) < 0.0 ? -y.q : y.q;
+    p.turn = glm::mat3_cast(glm::normalize(x.q + (qy - x.q) * f));
     p.scale = scale_of(x.shape, in, t);
-    for (int c = 0; c < 3; ++c) p.fur_lag[c] = x.lag[c].x + (y.lag[c].x - x.lag[c].x) * f;
-    p.fur_twist = x.twist.x + (y.twist.x - x.twist.x) * f;
+    for (int c = 0; c < 3; ++c) {
+      p.fur_lag[c] = x.lag[c].x + (y.lag[c].x - x.lag[c].x) * f;
+      p.fur_twist[c] = x.twist[c].x + (y.twist[c].x - x.twist[c].x) * f;
+    }
     if (x.asleep && y.asleep) {  // resting shapes follow the sphere's size exactly
       Body rest = x;
       settle(rest, t, in);
@@ -205,6 +264,12 @@ ExhibitPose blend(const std::vector<Body>& a, const std::vector<Body>& b, double
 }
 
 }  // namespace
+
+glm::dmat3 rotation(const glm::dvec3& rotation_vector) {
+  const double angle = std::sqrt(glm::dot(rotation_vector, rotation_vector));
+  if (!(angle > 0.0)) return glm::dmat3(1.0);
+  return glm::mat3_cast(about(rotation_vector / angle, angle));
+}
 
 double sphere_scale(const PhysicsInputs& in, double t) {
   const float phase = dm::wrap_phase(t, in.grow_period) / float(in.grow_period);

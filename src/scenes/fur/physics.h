@@ -5,8 +5,12 @@
 // shape (fur/spring.h).
 //
 // Bodies: semi-implicit Euler at a fixed step DT on a grid that starts at the first push, gravity,
-// restitution and friction at contacts, turning only about the vertical axis. A push is applied at
-// the first grid step at or after its time. A frame at TIME t integrates from the first push to t
+// restitution and friction at contacts. They turn about any axis (an orientation quaternion and an
+// angular velocity vector): a push lifts a shape, sends it sideways and sets it tumbling about the
+// horizontal axis across its path and spinning about the vertical; on the floor friction slows the
+// turn and a shape that lies tilted rights itself (the cube onto its nearest face, the torus flat),
+// as gravity about its contact edge would. A push is applied at the first grid step at or after its
+// time. A frame at TIME t integrates from the first push to t
 // and blends the two grid states around t: the same numbers whatever was rendered before. The cost
 // is bounded: a body sleeps when it is slow on the floor, or SLEEP_AFTER seconds after the last
 // push at the latest, and the springs snap to rest SETTLE_AFTER seconds after it, after which
@@ -15,10 +19,11 @@
 //
 // Fur spring, per shape, in exhibit space (x = where the fur tips lag, relative to the body):
 //   x'' + 2 zeta omega x' + omega^2 x = g - a_body(t),   g = (0, -9.81, 0) m/s^2,
-//   phi'' + 2 zeta omega phi' + omega^2 phi = -alpha_body(t)   (twist about the vertical),
+//   phi'' + 2 zeta omega phi' + omega^2 phi = -alpha_body(t)   (the fur's turn behind the body),
 // with a_body and alpha_body the body's (angular) acceleration over each step, constant over the
-// step, and each step integrated exactly. At rest x = g / omega^2 (the fur droops by 4 cm times
-// the displacement strength).
+// step, and each step integrated exactly; phi is a rotation vector (axis times angle), one spring
+// per component, so the fur lags a tumble about any axis as seed 004's rotation displacement does.
+// At rest x = g / omega^2 (the fur droops by 4 cm times the displacement strength).
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -45,13 +50,16 @@ struct PhysicsInputs {
 struct BodyPose {
   Shape shape = Shape::Sphere;
   glm::dvec3 position{0.0};  // centre, exhibit space
-  double yaw = 0.0, scale = 1.0;
-  glm::dvec3 fur_lag{0.0};  // x of the spring, exhibit space
-  double fur_twist = 0.0;   // phi of the spring, radians
+  glm::dmat3 turn{1.0};      // orientation: the shape's local axes in exhibit space
+  double scale = 1.0;
+  glm::dvec3 fur_lag{0.0};    // x of the spring, exhibit space
+  glm::dvec3 fur_twist{0.0};  // phi of the spring: a rotation vector, radians
 };
 
 using ExhibitPose = std::array<BodyPose, BODY_COUNT>;
 
+// The rotation by the rotation vector (axis times angle, |angle| < 4).
+glm::dmat3 rotation(const glm::dvec3& rotation_vector);
 // The sphere's scale at TIME t (the other shapes keep scale 1).
 double sphere_scale(const PhysicsInputs& in, double t);
 // The shapes at rest where they start.

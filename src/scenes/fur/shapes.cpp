@@ -106,23 +106,20 @@ std::shared_ptr<const TriangleMesh> shape_mesh(Shape s) {
   return meshes[size_t(s)];
 }
 
-double support_down(Shape s, double scale) {
+double support(Shape s, double scale, const glm::dmat3& turn, int axis) {
+  // The local axes' components along the world axis: turn's rows.
+  const glm::dvec3 d(turn[0][axis], turn[1][axis], turn[2][axis]);
   switch (s) {
     case Shape::Sphere:
       return SPHERE_RADIUS * scale;
-    case Shape::RoundedCube:
-      return CUBE_HALF * scale;
-    case Shape::Torus:
-      return TORUS_MINOR * scale;
+    case Shape::RoundedCube: {
+      const double inner = CUBE_HALF - CUBE_ROUNDING;
+      return scale * (inner * (std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z)) + CUBE_ROUNDING);
+    }
+    case Shape::Torus:  // the ring in the local x-z plane, its axis local y
+      return scale * (TORUS_MAJOR * std::sqrt(std::max(0.0, 1.0 - d.y * d.y)) + TORUS_MINOR);
   }
   return 0.0;
-}
-
-double support_side(Shape s, double scale, double yaw) {
-  if (s != Shape::RoundedCube)
-    return s == Shape::Sphere ? SPHERE_RADIUS * scale : (TORUS_MAJOR + TORUS_MINOR) * scale;
-  const double inner = CUBE_HALF - CUBE_ROUNDING;
-  return scale * (inner * (std::fabs(dcos(yaw)) + std::fabs(dsin(yaw))) + CUBE_ROUNDING);
 }
 
 }  // namespace sdfreel::fur

@@ -1,8 +1,8 @@
 #pragma once
 // The exhibit's three furry shapes: their meshes (positions, smooth normals, UVs scaled so strand
-// cells are roughly square) and the support distances their collisions use. Shapes only turn about
-// the vertical axis, so a shape meets the floor at a fixed depth below its centre and a wall at a
-// depth that depends on its yaw.
+// cells are roughly square) and the support distances their collisions use: a shape turned any
+// way meets the floor and the walls at depths that depend on its turn.
+#include <glm/glm.hpp>
 #include <memory>
 
 #include "render/triangle_mesh.h"
@@ -18,9 +18,9 @@ constexpr double TORUS_MAJOR = 0.13, TORUS_MINOR = 0.055;
 // Unit-size meshes are never needed: each mesh is built at the sizes above, once.
 std::shared_ptr<const TriangleMesh> shape_mesh(Shape s);
 
-// Distance from the centre down to the floor contact, for a shape scaled by `scale`.
-double support_down(Shape s, double scale);
-// Distance from the centre to a wall whose normal is the x (or z) axis, at yaw `yaw`.
-double support_side(Shape s, double scale, double yaw);
+// Distance from the centre to the plane that touches the shape (scaled by `scale`, turned by
+// `turn`, exhibit space) and faces along axis `axis` (0 x: the walls, 1 y: the floor, 2 z): the
+// support function of a box, a sphere or a torus. The shapes are symmetric, so either side.
+double support(Shape s, double scale, const glm::dmat3& turn, int axis);
 
 }  // namespace sdfreel::fur
