@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/process_time.h"
 #include "render/image.h"
 
 namespace sdfreel::bench {
@@ -13,10 +14,7 @@ namespace sdfreel::bench {
 // The still that measures start-up: 64x36, one frame, so that rendering is a few milliseconds.
 constexpr const char* STARTUP_RESOLUTION = "64x36";
 
-struct StartupTime {
-  double wall_seconds = 0.0;  // median
-  double cpu_seconds = 0.0;   // median of user + system time (of every thread)
-};
+using StartupTime = ProcessTime;  // medians of the timed runs
 
 // Runs `exe still TIMELINE --time 0 --resolution 64x36 --backend BACKEND -o FOLDER/startup.png`
 // once to fill the cache folder, then `repetitions` times timed. Throws std::runtime_error if a

@@ -9,6 +9,10 @@
 // `sdfreel bench --micro [SCENE...]`: Google Benchmark micro-benchmarks of each scene's distance
 // functions, scalar and eight lanes, at fixed points of one frame (src/bench/micro_*); writes the
 // table to stdout and DIR/micro.csv.
+//
+// `sdfreel bench --whole-process SCENE...`: each target rendered end to end by a fresh `sdfreel
+// render` on each backend, at the timeline's own size unless --resolution is given
+// (cli/bench_whole_process.h); writes the table to stdout and DIR/whole_process.csv.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -32,8 +36,10 @@
 #include "bench/sweep.h"
 #include "bench/table.h"
 #include "cli/bench_io.h"
+#include "cli/bench_whole_process.h"
 #include "cli/commands_impl.h"
 #include "cli/frame_range.h"
+#include "io/atomic_file.h"
 #include "scenes/registry.h"
 #include "timeline/sha256.h"
 
@@ -62,6 +68,8 @@ struct BenchOptions {
   bool all_rows = false;
   bool micro = false;
   double micro_min_time = 0.1;  // seconds per repetition of each micro-benchmark
+  bool whole_process = false;
+  bool resolution_given = false;  // --resolution on the command line (else the default above)
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -106,7 +114,8 @@ BenchTarget load_target(const std::string& arg, const BenchOptions& o) {
   } else if (std::filesystem::exists(arg)) {
     RenderOptions ro;
     ro.timeline_path = arg;
-    ro.resolution = o.resolution;
+    // A whole-process render keeps the timeline's own size unless asked otherwise.
+    if (!o.whole_process || o.resolution_given) ro.resolution = o.resolution;
     t.tl = load_with_overrides(ro);
     t.label = std::filesystem::path(arg).stem().string();
     t.timeline_hash = t.tl.sha256;
@@ -334,8 +343,43 @@ int run_micro(const BenchOptions& o) {
   return 0;
 }
 
+// The samples a target's timeline takes, as the whole-process table shows them.
+std::string samples_of(const Timeline& tl) {
+  if (!tl.adaptive.enabled) return std::to_string(tl.samples);
+  return "adaptive " + std::to_string(tl.adaptive.minimum) + ".." +
+         std::to_string(tl.adaptive.maximum);
+}
+
+int run_whole(const BenchOptions& o) {
+  if (o.scenes.empty())
+    throw UsageError("bench --whole-process: name at least one scene or timeline");
+  if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
+  std::filesystem::create_directories(o.out);
+  std::vector<WholeProcessTarget> targets;
+  for (const std::string& name : o.scenes) {
+    const BenchTarget t = load_target(name, o);
+    WholeProcessTarget w;
+    w.label = t.label;
+    if (find_scene(name)) {  // the bench's default timeline of the scene, as a file
+      w.timeline_file = o.out + "/whole-" + name + ".toml";
+      write_file_atomic(w.timeline_file,
+                        "[video]\nscene = \"" + name + "\"\nfps = 30\nduration = 10.0\nseed = 1\n");
+      w.resolution = o.resolution;
+    } else {
+      w.timeline_file = name;
+      if (o.resolution_given) w.resolution = o.resolution;
+    }
+    w.frames = int(t.frames.size());
+    w.width = t.tl.width, w.height = t.tl.height;
+    w.samples = samples_of(t.tl);
+    targets.push_back(w);
+  }
+  return run_whole_process(targets, {split(o.backends), o.frames, o.repetitions, o.out});
+}
+
 int run_bench(const BenchOptions& o) {
   if (o.micro) return run_micro(o);
+  if (o.whole_process) return run_whole(o);
   if (o.scenes.empty()) throw UsageError("bench: name at least one scene or timeline");
   if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
   std::vector<BenchTarget> targets;
@@ -485,7 +529,15 @@ void add_bench_command(CLI::App& app, int& status) {
   cmd->add_option("--micro-min-time", o->micro_min_time,
                   "--micro: seconds each repetition of each micro-benchmark runs at least")
       ->capture_default_str();
-  cmd->callback([o, &status] { status = run_bench(*o); });
+  cmd->add_flag("--whole-process", o->whole_process,
+                "time each target end to end instead: a fresh `sdfreel render TIMELINE --frames F "
+                "--no-video` per backend (frames and hashes written), backends alternating, at "
+                "the timeline's own size unless --resolution is given; prints each backend's time "
+                "against the CPU's and writes DIR/whole_process.csv");
+  cmd->callback([o, cmd, &status] {
+    o->resolution_given = cmd->count("--resolution") > 0;
+    status = run_bench(*o);
+  });
 }
 
 }  // namespace sdfreel
