@@ -107,8 +107,7 @@ void push(Body& b, int push_index, int body, double strength) {
   b.asleep = false;
   const glm::dvec3 side(double(dm::cos(float(a))), 0.0, double(dm::sin(float(a))));
   b.v += strength * glm::dvec3(PUSH_SIDE * side.x, PUSH_UP, PUSH_SIDE * side.z);
-  // Struck off its centre it tumbles forwards or backwards about the axis across its path, up x
-  // side.
+  // Struck off its centre it tumbles forwards or backwards about the axis across its path.
   b.w +=
       strength * (PUSH_SPIN * spin * UP + PUSH_TUMBLE * tumble * glm::dvec3(side.z, 0.0, -side.x));
 }
