@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "scenes/fur/shell_shading.h"
+#include "scenes/fur/turning.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::fur {

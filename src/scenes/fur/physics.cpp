@@ -8,6 +8,7 @@
 
 #include "scenes/fur/spring.h"
 #include "scenes/fur/strand_hash.h"
+#include "scenes/fur/turning.h"
 #include "sdf/det_math.h"
 
 namespace sdfreel::fur {
@@ -40,12 +41,6 @@ struct Body {
   SpringState lag[3], twist[3];
 };
 
-// The rotation by `angle` about the unit `axis`, from the series (|angle| < 4).
-glm::dquat about(const glm::dvec3& axis, double angle) {
-  const double s = series_sin(0.5 * angle);
-  return glm::dquat(series_cos(0.5 * angle), axis.x * s, axis.y * s, axis.z * s);
-}
-
 glm::dmat3 turn_of(const Body& b) {
   return glm::mat3_cast(b.q);
 }
@@ -54,24 +49,14 @@ double extent(const Body& b, int axis) {
   return support(b.shape, b.scale, turn_of(b), axis);
 }
 
-// The axis that points up when the shape lies still, signed upwards: the cube's local axis nearest
-// the vertical, the torus' own axis; none (zero) for the sphere, which lies still any way.
-glm::dvec3 rest_axis(const Body& b) {
-  if (b.shape == Shape::Sphere) return glm::dvec3(0.0);
-  const glm::dmat3 r = turn_of(b);
-  int best = 1;
-  if (b.shape == Shape::RoundedCube)
-    for (int i = 0; i < 3; ++i)
-      if (std::fabs(r[i].y) > std::fabs(r[best].y)) best = i;
-  return r[best].y < 0.0 ? -r[best] : r[best];
+glm::dvec3 rest_axis_of(const Body& b) {
+  return rest_axis(b.shape, turn_of(b));
 }
 
-// Turned so that its rest axis points straight up (the half-way quaternion from that axis to up).
+// Turned so that its rest axis points straight up.
 void lay_flat(Body& b) {
   if (b.shape == Shape::Sphere) return;
-  const glm::dvec3 a = rest_axis(b);
-  const glm::dvec3 c = glm::cross(a, UP);
-  b.q = glm::normalize(glm::dquat(1.0 + a.y, c.x, c.y, c.z) * b.q);
+  b.q = glm::normalize(flat_turn(rest_axis_of(b)) * b.q);
 }
 
 glm::dvec3 rest_lag() {
@@ -128,7 +113,7 @@ void move(Body& b, double t_next, const PhysicsInputs& in, double slide, double 
   b.v.y -= GRAVITY * DT;
   b.p += b.v * DT;
   const double speed = std::sqrt(glm::dot(b.w, b.w));
-  if (speed > 0.0) b.q = glm::normalize(about(b.w / speed, speed * DT) * b.q);
+  if (speed > 0.0) b.q = glm::normalize(rotation_about(b.w / speed, speed * DT) * b.q);
   const double down = extent(b, 1);
   b.on_floor = b.p.y <= down;
   if (b.on_floor) {
@@ -140,7 +125,7 @@ void move(Body& b, double t_next, const PhysicsInputs& in, double slide, double 
       b.v.y = std::max(b.v.y, 0.0);
     }
     b.v.x *= slide, b.v.z *= slide, b.w *= spin_drag;
-    b.w += (RIGHTING * DT) * glm::cross(rest_axis(b), UP);  // a tilted shape rights itself
+    b.w += (RIGHTING * DT) * glm::cross(rest_axis_of(b), UP);  // a tilted shape rights itself
   }
   if (b.p.y > CASE_HEIGHT - down) b.p.y = CASE_HEIGHT - down, b.v.y = -std::fabs(b.v.y);
   wall(b.p.x, b.v.x, CASE_HALF_X - extent(b, 0));
@@ -184,7 +169,7 @@ struct Simulation {
     for (size_t i = 0; i < bodies.size(); ++i) {
       Body& b = bodies[i];
       const bool slow = glm::length(b.v) < SLEEP_SPEED && glm::length(b.w) < SLEEP_SPIN;
-      const bool flat = glm::length(glm::cross(rest_axis(b), UP)) < FLAT_TILT;
+      const bool flat = glm::length(glm::cross(rest_axis_of(b), UP)) < FLAT_TILT;
       if (!b.asleep && ((b.on_floor && slow && flat) || since_push >= SLEEP_AFTER)) {
         b.asleep = true;
         b.v = glm::dvec3(0.0), b.w = glm::dvec3(0.0);
@@ -228,7 +213,7 @@ std::vector<Body> rest_bodies(const PhysicsInputs& in, double t) {
     Body b;
     b.shape = SHAPES[i];
     b.p = glm::dvec3(HOME_X[i], 0.0, HOME_Z[i]);
-    b.q = about(UP, HOME_YAW[i]);
+    b.q = rotation_about(UP, HOME_YAW[i]);
     for (int c = 0; c < 3; ++c) b.lag[c] = {lag[c], 0.0};
     settle(b, t, in);
     out.push_back(b);
@@ -263,12 +248,6 @@ ExhibitPose blend(const std::vector<Body>& a, const std::vector<Body>& b, double
 }
 
 }  // namespace
-
-glm::dmat3 rotation(const glm::dvec3& rotation_vector) {
-  const double angle = std::sqrt(glm::dot(rotation_vector, rotation_vector));
-  if (!(angle > 0.0)) return glm::dmat3(1.0);
-  return glm::mat3_cast(about(rotation_vector / angle, angle));
-}
 
 double sphere_scale(const PhysicsInputs& in, double t) {
   const float phase = dm::wrap_phase(t, in.grow_period) / float(in.grow_period);

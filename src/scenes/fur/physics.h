@@ -58,8 +58,6 @@ struct BodyPose {
 
 using ExhibitPose = std::array<BodyPose, BODY_COUNT>;
 
-// The rotation by the rotation vector (axis times angle, |angle| < 4).
-glm::dmat3 rotation(const glm::dvec3& rotation_vector);
 // The sphere's scale at TIME t (the other shapes keep scale 1).
 double sphere_scale(const PhysicsInputs& in, double t);
 // The shapes at rest where they start.
