@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "bench/median.h"
 #include "bench/process_time.h"
 #include "io/frame_files.h"
 

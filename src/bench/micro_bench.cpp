@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "bench/median.h"
 #include "bench/micro_check.h"
 
 namespace sdfreel::bench {
@@ -58,13 +59,6 @@ class RateCollector : public benchmark::BenchmarkReporter {
   std::map<std::string, std::vector<double>> rates_;
   std::string errors_;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 using Evaluate = std::function<void(const float*, const float*, const float*, float*, int)>;
 
@@ -137,8 +131,8 @@ std::vector<MicroRow> run_micro_benchmarks(const std::vector<MicroTarget>& targe
     const std::string base = r.scene + "/" + r.function;
     const auto s = collector.rates().find(base + "/scalar");
     const auto l = collector.rates().find(base + "/lanes");
-    if (s != collector.rates().end()) r.scalar_evals_per_s = median(s->second);
-    if (l != collector.rates().end()) r.lanes_evals_per_s = median(l->second);
+    if (s != collector.rates().end()) r.scalar_evals_per_s = median_of(s->second);
+    if (l != collector.rates().end()) r.lanes_evals_per_s = median_of(l->second);
   }
   return rows;
 }

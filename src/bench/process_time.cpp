@@ -5,7 +5,6 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <stdexcept>
@@ -44,12 +43,6 @@ ProcessTime run_timed(const std::vector<std::string>& argv, const std::string& w
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error(what + " failed (" + argv[0] + " " + argv[1] + " " + argv[2] + ")");
   return t;
-}
-
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace sdfreel::bench

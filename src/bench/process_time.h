@@ -16,7 +16,4 @@ struct ProcessTime {
 // `what` if it cannot start or does not exit with status 0.
 ProcessTime run_timed(const std::vector<std::string>& argv, const std::string& what);
 
-// The median (the mean of the middle two for an even count); 0 for none.
-double median_of(std::vector<double> v);
-
 }  // namespace sdfreel::bench

@@ -1,31 +1,18 @@
 #include "cli/bench_io.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
+#include "bench/median.h"
 #include "io/atomic_file.h"
 
 namespace sdfreel {
 
-namespace {
-
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// The bench's default timeline of a scene (30 fps, 10 s, seed 1, default camera) as a file, for
-// the start-up still.
-std::string default_timeline_file(const Timeline& tl, const std::string& out) {
-  const std::string path = out + "/startup-" + tl.scene + ".toml";
-  write_file_atomic(path, "[video]\nscene = \"" + tl.scene +
-                              "\"\nfps = 30\nduration = 10.0\nresolution = [64, 36]\nseed = 1\n");
+std::string write_default_timeline(const std::string& scene, const std::string& path) {
+  write_file_atomic(path,
+                    "[video]\nscene = \"" + scene + "\"\nfps = 30\nduration = 10.0\nseed = 1\n");
   return path;
 }
-
-}  // namespace
 
 bench::IoRow measure_io_row(const std::string& label, const std::string& timeline_file,
                             FramePipeline& pipe, const std::string& backend,
@@ -33,9 +20,11 @@ bench::IoRow measure_io_row(const std::string& label, const std::string& timelin
                             const std::string& out) {
   const std::string folder = out + "/io";
   std::filesystem::create_directories(folder);
-  const std::string timeline = std::filesystem::is_regular_file(timeline_file)
-                                   ? timeline_file
-                                   : default_timeline_file(pipe.timeline(), folder);
+  const std::string timeline =
+      std::filesystem::is_regular_file(timeline_file)
+          ? timeline_file
+          : write_default_timeline(pipe.timeline().scene,
+                                   folder + "/startup-" + pipe.timeline().scene + ".toml");
   bench::IoRow row;
   row.scene = label;
   row.backend = backend;
@@ -48,8 +37,8 @@ bench::IoRow measure_io_row(const std::string& label, const std::string& timelin
       render.push_back(f.seconds);
       write.push_back(bench::time_frame_write(f.linear, f.display, folder));
     }
-  row.render_seconds = median_of(render);
-  row.write_seconds = median_of(write);
+  row.render_seconds = bench::median_of(render);
+  row.write_seconds = bench::median_of(write);
   return row;
 }
 

@@ -8,6 +8,11 @@
 
 namespace sdfreel {
 
+// The bench's default timeline of a scene (its defaults and default camera, 30 fps, 10 s, seed 1;
+// the size comes from --resolution) written to `path`, for a command that reads a file. Returns
+// `path`.
+std::string write_default_timeline(const std::string& scene, const std::string& path);
+
 // Start-up of a still of `timeline_file` (a scene's default timeline is written to `out` when the
 // target is a scene name), then each of `frames` rendered with the timeline's own settings and
 // written as PNG + EXR into `out`: medians of `repetitions`.

@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "bench/median.h"
 #include "bench/whole_process.h"
 #include "io/atomic_file.h"
 

@@ -26,6 +26,7 @@
 #include "bench/adaptive_configs.h"
 #include "bench/backend_table.h"
 #include "bench/csv.h"
+#include "bench/median.h"
 #include "bench/metrics.h"
 #include "bench/micro_bench.h"
 #include "bench/micro_report.h"
@@ -39,7 +40,6 @@
 #include "cli/bench_whole_process.h"
 #include "cli/commands_impl.h"
 #include "cli/frame_range.h"
-#include "io/atomic_file.h"
 #include "scenes/registry.h"
 #include "timeline/sha256.h"
 
@@ -191,12 +191,6 @@ double time_frames(FramePipeline& pipe, const std::vector<FrameContext>& context
   double seconds = 0.0;
   for (const FrameContext& ctx : contexts) seconds += pipe.render_context(ctx).seconds;
   return seconds / double(contexts.size());
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 std::vector<FrameContext> bench_contexts(const FramePipeline& pipe, const BenchTarget& t,
@@ -361,9 +355,7 @@ int run_whole(const BenchOptions& o) {
     WholeProcessTarget w;
     w.label = t.label;
     if (find_scene(name)) {  // the bench's default timeline of the scene, as a file
-      w.timeline_file = o.out + "/whole-" + name + ".toml";
-      write_file_atomic(w.timeline_file,
-                        "[video]\nscene = \"" + name + "\"\nfps = 30\nduration = 10.0\nseed = 1\n");
+      w.timeline_file = write_default_timeline(name, o.out + "/whole-" + name + ".toml");
       w.resolution = o.resolution;
     } else {
       w.timeline_file = name;
@@ -461,7 +453,7 @@ int run_bench(const BenchOptions& o) {
           times[k].push_back(time_frames(*pipe, bench_contexts(*pipe, t, *measured[k])));
       }
       for (size_t k = 0; k < measured.size(); ++k)
-        rows[first + k].seconds_per_frame = median(times[k]);
+        rows[first + k].seconds_per_frame = bench::median_of(times[k]);
       std::fprintf(stderr, "bench: %s %s start-up and frame writing\n", t.label.c_str(),
                    backend.c_str());
       io_rows.push_back(
