@@ -7,9 +7,13 @@
 // tests/io/shipped_views_test.cpp holds it to OpenColorIO's result.
 #include <glm/vec3.hpp>
 
+#include "sdf/lanes.h"
+
 namespace sdfreel {
 
 glm::vec3 aces_sdr_video_to_xyz(const glm::vec3& aces2065);
+// Eight pixels at once (the display transform's path), each lane with the bits of the above.
+V3x8 aces_sdr_video_to_xyz(const V3x8& aces2065);
 
 // The two tone curves in log10 units, exposed for their tests.
 float rrt_tone_curve_log10(float log_x);  // segmented_spline_c5_fwd

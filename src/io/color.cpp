@@ -102,7 +102,7 @@ struct DisplayTransform::Impl {
   std::string description;
   // The shipped config's views are sdfreel's own math (io/shipped_views.h); every other view is
   // OpenColorIO's CPU processor.
-  ShippedView shipped = nullptr;
+  ShippedViewPixels shipped = nullptr;
   OCIO::ConstCPUProcessorRcPtr cpu;
 
   void convert(float* rgba, int width, int rows) const {
@@ -111,11 +111,7 @@ struct DisplayTransform::Impl {
       cpu->apply(desc);
       return;
     }
-    for (size_t i = 0, n = size_t(width) * rows; i < n; ++i) {
-      float* p = rgba + i * 4;
-      const glm::vec3 out = shipped({p[0], p[1], p[2]});
-      p[0] = out.r, p[1] = out.g, p[2] = out.b;
-    }
+    shipped(rgba, size_t(width) * rows);
   }
 };
 
@@ -135,7 +131,7 @@ DisplayTransform::DisplayTransform(const std::string& config, const std::string&
     throw std::runtime_error("OCIO config \"" + config + "\" defines no scene_linear role");
 
   impl_->description = config + " / " + display + " / " + view;
-  if (config == "builtin") impl_->shipped = shipped_view(display, view);
+  if (config == "builtin") impl_->shipped = shipped_view_pixels(display, view);
   if (impl_->shipped) return;
 
   try {

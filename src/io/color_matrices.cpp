@@ -1,5 +1,7 @@
 #include "io/color_matrices.h"
 
+#include "sdf/lanes.h"
+
 namespace sdfreel {
 
 const Primaries kAcesAp0{{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}, {0.32168, 0.33767}};
@@ -88,6 +90,11 @@ glm::vec3 FloatMat3::operator()(const glm::vec3& v) const {
   glm::vec3 out;
   for (int i = 0; i < 3; ++i) out[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z;
   return out;
+}
+
+V3x8 FloatMat3::operator()(const V3x8& v) const {
+  const auto row = [&](int i) { return m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z; };
+  return {row(0), row(1), row(2)};
 }
 
 }  // namespace sdfreel

@@ -6,6 +6,8 @@
 
 namespace sdfreel {
 
+struct V3x8;
+
 struct Chromaticity {
   double x, y;
 };
@@ -36,6 +38,7 @@ struct FloatMat3 {
   float m[3][3];
   explicit FloatMat3(const Mat3& d);
   glm::vec3 operator()(const glm::vec3& v) const;
+  V3x8 operator()(const V3x8& v) const;  // eight pixels, each with the bits of the line above
 };
 
 }  // namespace sdfreel

@@ -201,6 +201,20 @@ inline F8 cos(F8 x) {
 
 }  // namespace dm
 
+// table[i] in each lane: a load, no arithmetic, so the bits of the scalar table[i].
+inline float gather(const float* table, int i) {
+  return table[i];
+}
+inline F8 gather(const float* table, M8 i) {
+#ifdef __AVX2__
+  return reinterpret_cast<F8>(_mm256_i32gather_ps(table, reinterpret_cast<__m256i>(i), 4));
+#else
+  F8 v;
+  for (int k = 0; k < LANES; ++k) v[k] = table[i[k]];
+  return v;
+#endif
+}
+
 // ---- vectors of lanes ----
 struct V2x8 {
   F8 x, y;

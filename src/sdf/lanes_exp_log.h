@@ -1,0 +1,119 @@
+#pragma once
+// exp, log, pow, atan2 of det_math.h on eight lanes: each lane performs the scalar function's
+// operations in its order, both sides of every branch computed and one selected, so a lane has
+// the scalar's bits for every input, NaN, infinities and denormals included
+// (tests/sdf/lanes_exp_log_test.cpp). The display transform runs on them (io/aces_sdr_video.cpp).
+#include <cfloat>
+#include <cstdint>
+
+#include "sdf/det_math.h"
+#include "sdf/lanes.h"
+
+namespace sdfreel {
+
+typedef uint32_t U8 __attribute__((vector_size(32)));
+
+namespace dm {
+
+// Lane twins of exp2_int, float_bits, bits_float and the float <-> int conversions (truncating,
+// as the scalar int(x) does).
+inline F8 exp2_int(M8 k) {
+  return reinterpret_cast<F8>(reinterpret_cast<U8>(k + 127) << 23);
+}
+inline int to_int(float x) {
+  return int(x);
+}
+inline float to_float(int k) {
+  return float(k);
+}
+inline M8 to_int(F8 x) {
+  return __builtin_convertvector(x, M8);
+}
+inline F8 to_float(M8 k) {
+  return __builtin_convertvector(k, F8);
+}
+
+inline F8 exp(F8 x) {
+  const M8 underflow = x < EXP_MIN_ARG;
+  // The scalar returns before converting such an x to int; here it is converted, so in range.
+  x = min(max(x, EXP_MIN_ARG), EXP_MAX_ARG);
+  const F8 k = floor(x * LOG2E + 0.5f);
+  F8 r = x - k * LN2_HI;
+  r = r - k * LN2_LO;
+  const F8 z = r * r;
+  const F8 p = (((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r +
+                  4.1665795894e-2f) *
+                     r +
+                 1.6666665459e-1f) *
+                    r +
+                5.0000001201e-1f) *
+                   z +
+               r + 1.0f;
+  const F8 k1 = floor(k * 0.5f);
+  const F8 v = p * exp2_int(to_int(k1)) * exp2_int(to_int(k - k1));
+  return select(underflow, splat(0.0f), v);
+}
+
+inline F8 log(F8 x) {
+  const M8 not_positive = ~(x > 0.0f);  // NaN included
+  x = min(x, FLT_MAX);
+  const M8 denormal = x < FLT_MIN;
+  x = select(denormal, x * TWO_POW_23, x);
+  M8 e = denormal & -23;
+  const U8 bits = reinterpret_cast<U8>(x);
+  e = e + (reinterpret_cast<M8>((bits >> 23) & 0xffu) - 126);
+  F8 m = reinterpret_cast<F8>((bits & 0x007fffffu) | 0x3f000000u);
+  const M8 below = m < SQRT_HALF;
+  e = e + below;  // -1 where below
+  m = select(below, m + m - 1.0f, m - 1.0f);
+  const F8 z = m * m;
+  F8 y = ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
+               1.2420140846e-1f) *
+                  m +
+              1.4249322787e-1f) *
+                 m -
+             1.6668057665e-1f) *
+                m +
+            2.0000714765e-1f) *
+               m -
+           2.4999993993e-1f) *
+              m +
+          3.3333331174e-1f) *
+         m * z;
+  const F8 fe = to_float(e);
+  y = y + LN2_LO * fe;
+  y = y - 0.5f * z;
+  F8 r = m + y;
+  r = r + LN2_HI * fe;
+  return select(not_positive, splat(LOG_OF_ZERO), r);
+}
+
+// pow with a uniform exponent, the case of every caller.
+inline F8 pow(F8 x, float y) {
+  const float at_zero = y > 0.0f ? 0.0f : (y == 0.0f ? 1.0f : POW_ZERO_NEGATIVE);
+  return select(x <= 0.0f, splat(at_zero), exp(y * log(x)));
+}
+
+inline F8 atan_unit(F8 t) {
+  const M8 above = t > TAN_PI_8;
+  const F8 base = select(above, splat(QUARTER_PI), splat(0.0f));
+  t = select(above, (t - 1.0f) / (t + 1.0f), t);
+  const F8 z = t * t;
+  return base + ((((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
+                  3.33329491539e-1f) *
+                     z * t +
+                 t);
+}
+
+inline F8 atan2(F8 y, F8 x) {
+  const F8 ax = abs(x), ay = abs(y);
+  const F8 hi = max(ax, ay), lo = min(ax, ay);
+  F8 a = atan_unit(lo / hi);
+  a = select(ay > ax, HALF_PI - a, a);
+  a = select(x < 0.0f, PI - a, a);
+  a = select(y < 0.0f, -a, a);
+  return select(hi == 0.0f, splat(0.0f), a);
+}
+
+}  // namespace dm
+}  // namespace sdfreel
