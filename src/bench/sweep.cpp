@@ -28,23 +28,28 @@ BenchConfig preset(const char* name, Quality q) {
   return BenchConfig{name, q, march_settings(q), preset_samples(q), true};
 }
 
-// One-at-a-time variations of `base`, named "<base>:<parameter>=<value>".
+// One-at-a-time variations of `base`, named "<base>:<parameter>=<value>". A march value equal to
+// the base's is left out; the base's own sample count stays, as "<base>:spp=N", which is the
+// fixed-sampling point where the preset itself is adaptive (`final` on a small frame).
 void sweep_around(BenchConfig base, std::vector<BenchConfig>& out) {
   const std::string prefix = base.name + ":";
   base.named_preset = false;
   for (float e : HIT_EPS_VALUES) {
+    if (e == base.march.hit_eps) continue;
     BenchConfig c = base;
     c.march.hit_eps = e;
     c.name = prefix + fmt("eps=%g", e);
     out.push_back(c);
   }
   for (float f : STEP_FACTOR_VALUES) {
+    if (f == base.march.step_factor) continue;
     BenchConfig c = base;
     c.march.step_factor = f;
     c.name = prefix + fmt("relax=%g", f);
     out.push_back(c);
   }
   for (int s : MAX_STEPS_VALUES) {
+    if (s == base.march.max_steps) continue;
     BenchConfig c = base;
     // Shadow and reflection budgets keep their ratio to the primary budget.
     c.march.shadow_steps = s * base.march.shadow_steps / base.march.max_steps;
@@ -54,12 +59,14 @@ void sweep_around(BenchConfig base, std::vector<BenchConfig>& out) {
     out.push_back(c);
   }
   for (float e : NORMAL_EPS_VALUES) {
+    if (e == base.march.normal_eps) continue;
     BenchConfig c = base;
     c.march.normal_eps = e;
     c.name = prefix + fmt("normal_eps=%g", e);
     out.push_back(c);
   }
   for (float d : MAX_DIST_VALUES) {
+    if (d == base.march.max_dist) continue;
     BenchConfig c = base;
     c.march.max_dist = d;
     c.name = prefix + fmt("far=%g", d);
@@ -78,6 +85,13 @@ void sweep_around(BenchConfig base, std::vector<BenchConfig>& out) {
 std::vector<BenchConfig> preset_configs() {
   BenchConfig naive{"naive", Quality::Final, naive_march_settings(), naive_preset_samples(), true};
   return {naive, preset("draft", Quality::Draft), preset("final", Quality::Final)};
+}
+
+std::vector<BenchConfig> preset_configs(int width, int height) {
+  std::vector<BenchConfig> out = preset_configs();
+  if (small_frame(width, height))
+    out.back().adaptive = adaptive_preset(Quality::Final, width, height);
+  return out;
 }
 
 std::vector<BenchConfig> sweep_configs() {

@@ -20,6 +20,9 @@ struct BenchConfig {
 
 // naive, draft, final: quality.cpp's numbers at the samples each preset was chosen for.
 std::vector<BenchConfig> preset_configs();
+// The same for frames of width x height: on a small frame `final` is adaptive 4..28 (quality.h),
+// what `adaptive = true` does in a `final` timeline there.
+std::vector<BenchConfig> preset_configs(int width, int height);
 // One parameter at a time around `draft` and around `final`: hit epsilon, relaxation, step budget
 // (max, shadow and reflection steps scaled together), normal epsilon, far limit and samples.
 std::vector<BenchConfig> sweep_configs();

@@ -340,8 +340,8 @@ int run_micro(const BenchOptions& o) {
 // The samples a target's timeline takes, as the whole-process table shows them.
 std::string samples_of(const Timeline& tl) {
   if (!tl.adaptive.enabled) return std::to_string(tl.samples);
-  return "adaptive " + std::to_string(tl.adaptive.minimum) + ".." +
-         std::to_string(tl.adaptive.maximum);
+  const AdaptiveSampling a = tl.adaptive_at_size();
+  return "adaptive " + std::to_string(a.minimum) + ".." + std::to_string(a.maximum);
 }
 
 int run_whole(const BenchOptions& o) {
@@ -377,7 +377,9 @@ int run_bench(const BenchOptions& o) {
   std::vector<BenchTarget> targets;
   for (const std::string& s : o.scenes) targets.push_back(load_target(s, o));
   const std::vector<std::string> backends = split(o.backends);
-  std::vector<BenchConfig> configs = bench::preset_configs();
+  // Every target has the bench's size (load_target): `final` follows it (quality.h).
+  std::vector<BenchConfig> configs =
+      bench::preset_configs(targets.front().tl.width, targets.front().tl.height);
   if (!o.presets_only)
     for (const BenchConfig& c : bench::sweep_configs())
       if (std::none_of(configs.begin(), configs.end(),

@@ -111,7 +111,7 @@ int run_check(const RenderOptions& o) {
               frames.size(), frames.empty() ? 0 : frames.front(),
               frames.empty() ? 0 : frames.back());
   std::printf("picture:    %dx%d, %s, quality %s\n", tl.width, tl.height,
-              tl.adaptive.enabled ? ("adaptive " + adaptive_text(tl.adaptive)).c_str()
+              tl.adaptive.enabled ? ("adaptive " + adaptive_text(tl.adaptive_at_size())).c_str()
                                   : (std::to_string(tl.samples) +
                                      (tl.samples == 1 ? " sample" : " samples") + " a pixel")
                                         .c_str(),

@@ -35,7 +35,7 @@ ManifestHeader manifest_header(const Timeline& tl, Backend& backend) {
   h.fps_den = tl.fps.den;
   h.frame_count = tl.frame_count();
   h.samples = tl.samples;
-  if (tl.adaptive.enabled) h.adaptive = adaptive_text(tl.adaptive);
+  if (tl.adaptive.enabled) h.adaptive = adaptive_text(tl.adaptive_at_size());
   h.quality = quality_name(tl.quality);
   h.color_config = tl.color_config;
   h.display = tl.display;

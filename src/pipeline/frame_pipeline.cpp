@@ -23,7 +23,7 @@ FrameContext frame_context_at(const Timeline& tl, const SceneInfo& scene, int fr
   ctx.width = tl.width;
   ctx.height = tl.height;
   ctx.samples = tl.samples;
-  ctx.adaptive = tl.adaptive;
+  ctx.adaptive = tl.adaptive_at_size();
   ctx.seed = tl.seed;
   ctx.quality = tl.quality;
   ctx.pose = tl.camera.sample(t, scene.default_camera);

@@ -1,5 +1,7 @@
 #include "render/quality.h"
 
+#include <cstdint>
+
 #include "render/adaptive_sampling.h"
 
 namespace sdfreel {
@@ -61,6 +63,19 @@ AdaptiveSampling adaptive_preset(Quality q) {
       return AdaptiveSampling{true, 8, 64, 0.001f};
   }
   return adaptive_preset(Quality::Final);
+}
+
+bool small_frame(int width, int height) {
+  return int64_t(width) * height < int64_t(320) * 180;
+}
+
+// The lanterns at 160x90 (README "Adaptive sampling"): 42.3 dB in 0.9x the time of fixed 16
+// samples (39.9 dB). A minimum of 4, since two first samples too often miss a star or a distant
+// lantern and look converged; a maximum of 28, where R2's points are spread well.
+AdaptiveSampling adaptive_preset(Quality q, int width, int height) {
+  if (q == Quality::Final && small_frame(width, height))
+    return AdaptiveSampling{true, 4, 28, 0.008f};
+  return adaptive_preset(q);
 }
 
 std::optional<Quality> parse_quality(const std::string& name) {

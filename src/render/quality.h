@@ -53,8 +53,16 @@ MarchSettings naive_march_settings();
 // preset's error budget holds at this sample count or more.
 int preset_samples(Quality q);
 int naive_preset_samples();
-// Adaptive sampling of a preset (timeline `adaptive = true`; render/adaptive_sampling.h), enabled.
+// Adaptive sampling of a preset (timeline `adaptive = true`; render/adaptive_sampling.h), enabled,
+// for frames of ordinary size.
 AdaptiveSampling adaptive_preset(Quality q);
+// Frames with fewer pixels than 320x180: a pixel covers what 16 or more cover at 1280x720, and most
+// pixels hold an edge, a strut or a star.
+bool small_frame(int width, int height);
+// The preset for a frame of this size: `final` on a small frame starts every pixel at 4 samples
+// and goes to 28 (adaptive_preset(Quality::Final) below that size), which is also what the bench's
+// `final` runs there (fixed 16 samples at 160x90 stayed under 40 dB).
+AdaptiveSampling adaptive_preset(Quality q, int width, int height);
 std::optional<Quality> parse_quality(const std::string& name);
 const char* quality_name(Quality q);
 

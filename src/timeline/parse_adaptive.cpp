@@ -1,5 +1,6 @@
 // [video] adaptive: per-pixel adaptive sampling (render/adaptive_sampling.h). `adaptive = true`
-// takes the quality preset's numbers; a table sets any of them. `samples` keeps meaning fixed
+// takes the quality preset's numbers (for the frame's size: Timeline::adaptive_at_size); a table
+// sets any of them. `samples` keeps meaning fixed
 // sampling, so a timeline gives one or the other.
 
 #include "render/adaptive_sampling.h"
@@ -11,7 +12,8 @@ namespace sdfreel {
 
 namespace {
 
-void parse_table(const TomlReader& r, const toml::table& t, AdaptiveSampling& a) {
+void parse_table(const TomlReader& r, const toml::table& t, AdaptiveSampling& a,
+                 Timeline::AdaptiveGiven& given) {
   r.check_keys(t, "video.adaptive", {"minimum", "maximum", "threshold", "target_db"});
   const toml::node* min_node = t.get("minimum");
   const toml::node* max_node = t.get("maximum");
@@ -23,6 +25,7 @@ void parse_table(const TomlReader& r, const toml::table& t, AdaptiveSampling& a)
                ") must be at least video.adaptive.minimum (" + std::to_string(a.minimum) + ")");
   const toml::node* threshold = t.get("threshold");
   const toml::node* target = t.get("target_db");
+  given = {min_node != nullptr, max_node != nullptr, threshold || target};
   if (threshold && target) r.fail(*target, "video.adaptive takes threshold or target_db, not both");
   if (threshold) {
     const double v = r.number(*threshold, "video.adaptive.threshold");
@@ -52,7 +55,7 @@ void parse_adaptive(const TomlReader& r, const toml::table& video, Timeline& tl)
     a.enabled = b->get();
   } else if (n->is_table()) {
     a.enabled = true;
-    parse_table(r, *n->as_table(), a);
+    parse_table(r, *n->as_table(), a, tl.adaptive_given);
   } else {
     r.fail(*n,
            "video.adaptive must be true, false or a table {minimum, maximum, threshold or "

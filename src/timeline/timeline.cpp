@@ -25,6 +25,22 @@ int Timeline::frame_count() const {
   return std::max(1, int(std::llround(duration * fps.value())));
 }
 
+AdaptiveSampling Timeline::adaptive_at_size() const {
+  if (!adaptive.enabled) return adaptive;
+  AdaptiveSampling a = adaptive_preset(quality, width, height);
+  if (adaptive_given.minimum) a.minimum = adaptive.minimum;
+  if (adaptive_given.maximum) a.maximum = adaptive.maximum;
+  if (adaptive_given.threshold) a.threshold = adaptive.threshold;
+  // A given bound wins over the preset's other one (the file's pair was checked when parsed).
+  if (a.maximum < a.minimum) {
+    if (adaptive_given.minimum)
+      a.maximum = a.minimum;
+    else
+      a.minimum = a.maximum;
+  }
+  return a;
+}
+
 double Timeline::video_time(int frame) const {
   // One rounding only: frame * den is an exact integer (the parser bounds num and den).
   return double(int64_t(frame) * fps.den) / double(fps.num);

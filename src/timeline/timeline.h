@@ -78,6 +78,11 @@ struct Timeline {
   int resolution_line = 0, resolution_column = 0;
   int samples = 4;
   AdaptiveSampling adaptive;  // enabled: per-pixel adaptive sampling instead of `samples`
+  // Which of adaptive's numbers the file gave; the others are its quality preset's and follow the
+  // frame's size, which a command may still change (adaptive_at_size).
+  struct AdaptiveGiven {
+    bool minimum = false, maximum = false, threshold = false;
+  } adaptive_given;
   Quality quality = Quality::Final;
   uint64_t seed = 1;
 
@@ -93,7 +98,7 @@ struct Timeline {
   };
   std::vector<OtherFrames> other_frames;
   FrameFileOptions frame_options;
-  std::string video;           // "" = no video
+  std::string video;  // "" = no video
   // [output] audio: a soundtrack under the video (io/audio_track.h), its path resolved against
   // the timeline's folder, with where the key stands (it is opened when the command starts).
   struct Soundtrack {
@@ -114,7 +119,10 @@ struct Timeline {
   CameraPath camera;
   std::vector<ParamTrack> params;
 
-  int frame_count() const;             // round(duration * fps)
+  int frame_count() const;  // round(duration * fps)
+  // The adaptive sampling a frame of width x height gets: the given numbers, the rest from
+  // adaptive_preset(quality, width, height) (`final` samples small frames more).
+  AdaptiveSampling adaptive_at_size() const;
   double video_time(int frame) const;  // frame / fps
   double scene_time(int frame) const;  // TIME at video_time(frame)
 };
