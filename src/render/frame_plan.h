@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "render/image.h"
+#include "render/mesh_fragments8.h"
 #include "render/rays.h"
 #include "render/shader_inputs.h"
 #include "render/triangle_mesh.h"
@@ -135,6 +136,10 @@ struct MeshPass {
   std::vector<ImageInput> inputs;  // targets the shading reads (MeshFragment::inputs)
   std::optional<PassView> view;    // none: the plan's camera
   std::function<glm::vec4(const MeshFragment&)> shade;
+  // Optional CPU fast path of `shade`, preferred when set: eight fragments of a triangle at once,
+  // each lane with `shade`'s bits for that fragment (lane code: the same operations in the same
+  // order).
+  std::function<void(const MeshFragments8&, FragmentColours8&)> shade8;
   // Instead of `shade`, for surfaces found inside the mesh (ray marching in a bounding mesh): the
   // fragment's colour and its own window depth, or false to discard. The depth test and write use
   // that depth (a late test, as GL does when the fragment shader writes gl_FragDepth).

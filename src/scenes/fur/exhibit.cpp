@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "scenes/fur/shading_lanes.h"
 #include "scenes/fur/shell_shading.h"
 #include "scenes/fur/turning.h"
 #include "sdf/det_math.h"
@@ -89,6 +90,7 @@ MeshPass shell_pass(const glm::mat4& model, const BodyPose& body, const FurLook&
     return place_shell_vertex(m, inst, pos, nrm);
   };
   pass.shade = [look](const MeshFragment& f) { return shade_shell(look, f); };
+  pass.shade8 = [look](const MeshFragments8& f, FragmentColours8& c) { shade_shell8(look, f, c); };
   return pass;
 }
 
@@ -108,6 +110,7 @@ MeshPass lit_boxes_pass(const std::string& name, std::vector<MeshInstance> boxes
   pass.uniforms.push_back({"u_hit_mask", 1, {look.hit_mask ? 1.0f : 0.0f}});
   pass.uniforms.push_back({"u_surface", 1, {float(look.surface)}});
   pass.shade = [look](const MeshFragment& f) { return shade_case(look, f); };
+  pass.shade8 = [look](const MeshFragments8& f, FragmentColours8& c) { shade_case8(look, f, c); };
   return pass;
 }
 

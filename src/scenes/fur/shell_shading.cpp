@@ -8,8 +8,6 @@ namespace sdfreel::fur {
 
 // Fake ambient occlusion: clamp(h^AO_POWER + AO_BIAS, 0, 1) (Acerola's attenuation 2.04).
 constexpr float AO_POWER = 2.04f, AO_BIAS = 0.18f;
-// Strand heights: a cell's strand reaches h = mix(STRAND_MIN, STRAND_MAX, random).
-constexpr float STRAND_MIN = 0.35f, STRAND_MAX = 1.0f;
 
 glm::vec4 shell_data(int i, int n, float curvature) {
   const float h = float(i) / float(n);

@@ -7,6 +7,9 @@
 
 namespace sdfreel::fur {
 
+// Strand heights: a cell's strand reaches h = mix(STRAND_MIN, STRAND_MAX, random).
+constexpr float STRAND_MIN = 0.35f, STRAND_MAX = 1.0f;
+
 // Per shape and frame, world space (uniforms u_fur_* on GL).
 struct ShellMotion {
   float length = 0.0f;     // extrusion of the outermost shell

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "sdf/lanes_exp_log.h"
+
 namespace sdfreel::fur {
 
 constexpr uint32_t PCG_MULTIPLIER = 1664525u;
@@ -27,6 +29,19 @@ inline glm::uvec2 pcg2d(glm::uvec2 v) {
 inline float strand_random(int cell_x, int cell_y) {
   const glm::uvec2 h = pcg2d(glm::uvec2(uint32_t(cell_x), uint32_t(cell_y)));
   return float(h.x >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Eight cells at once: lane k is strand_random(cell_x[k], cell_y[k]), the same integer steps.
+inline F8 strand_random(M8 cell_x, M8 cell_y) {
+  U8 x = reinterpret_cast<U8>(cell_x) * PCG_MULTIPLIER + PCG_INCREMENT;
+  U8 y = reinterpret_cast<U8>(cell_y) * PCG_MULTIPLIER + PCG_INCREMENT;
+  x += y * PCG_MULTIPLIER;
+  y += x * PCG_MULTIPLIER;
+  x ^= x >> 16u;
+  y ^= y >> 16u;
+  x += y * PCG_MULTIPLIER;
+  x ^= x >> 16u;  // y's last steps do not reach the result
+  return dm::to_float(reinterpret_cast<M8>(x >> 8u)) * (1.0f / 16777216.0f);
 }
 
 }  // namespace sdfreel::fur
