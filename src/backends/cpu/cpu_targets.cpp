@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "render/tiling.h"
+
 namespace sdfreel {
 
-CpuTargets::CpuTargets(const std::vector<TargetSpec>& specs, int width, int height)
-    : specs_(specs) {
+CpuTargets::CpuTargets(const std::vector<TargetSpec>& specs, int width, int height, int threads)
+    : specs_(specs), threads_(threads) {
   for (const TargetSpec& s : specs_)
     if (!images_
              .emplace(s.name,
@@ -27,12 +29,16 @@ void CpuTargets::clear_where(bool per_sample_only) {
     if (per_sample_only && s.per_frame) continue;
     const glm::vec4 c = s.kind == TargetKind::Depth ? glm::vec4(1.0f) : s.clear;
     std::vector<float>& px = images_.at(s.name).pixels;
-    for (size_t i = 0; i < px.size(); i += 4) {
-      px[i] = c.x;
-      px[i + 1] = c.y;
-      px[i + 2] = c.z;
-      px[i + 3] = c.w;
-    }
+    // A frame's targets are tens of megabytes, cleared before every sample: in parallel chunks.
+    const size_t n = px.size() / 4, chunk = 1 << 14;
+    for_each_index((n + chunk - 1) / chunk, threads_, [&](size_t k) {
+      for (size_t i = k * chunk * 4, end = std::min(n, (k + 1) * chunk) * 4; i < end; i += 4) {
+        px[i] = c.x;
+        px[i + 1] = c.y;
+        px[i + 2] = c.z;
+        px[i + 3] = c.w;
+      }
+    });
   }
 }
 

@@ -13,7 +13,8 @@ namespace sdfreel {
 
 class CpuTargets {
  public:
-  CpuTargets(const std::vector<TargetSpec>& specs, int width, int height);
+  // threads: how many clear the images (0 = all cores), as the passes run.
+  CpuTargets(const std::vector<TargetSpec>& specs, int width, int height, int threads = 1);
   void clear();             // every target
   void clear_per_sample();  // all but the per-frame targets
   // Throws std::runtime_error naming the pass when the plan names a target it does not declare.
@@ -22,6 +23,7 @@ class CpuTargets {
  private:
   void clear_where(bool per_sample_only);
   std::vector<TargetSpec> specs_;
+  int threads_;
   std::map<std::string, ImageRGBA> images_;
 };
 

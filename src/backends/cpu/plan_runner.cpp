@@ -1,5 +1,7 @@
 #include "backends/cpu/plan_runner.h"
 
+#include <algorithm>
+#include <functional>
 #include <stdexcept>
 
 #include "backends/cpu/cpu_image_pass.h"
@@ -7,16 +9,26 @@
 #include "backends/cpu/cpu_ray_pass.h"
 #include "backends/cpu/cpu_ray_pass_resolved.h"
 #include "render/quality.h"
+#include "render/tiling.h"
 
 namespace sdfreel {
 
 namespace {
 
+// fn(begin, end) over [0, n) pixels in chunks on `threads` threads: each pixel's own sums.
+void for_pixel_chunks(size_t n, int threads, const std::function<void(size_t, size_t)>& fn) {
+  const size_t chunk = 1 << 14;
+  for_each_index((n + chunk - 1) / chunk, threads,
+                 [&](size_t k) { fn(k * chunk, std::min(n, (k + 1) * chunk)); });
+}
+
 // Adds the sample's colour (all four channels, as the fixed sum always did) to live pixels.
-void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum) {
-  for (size_t i = 0, n = sum.pixels.size() / 4; i < n; ++i)
-    if (live.live(i))
-      for (size_t c = 0; c < 4; ++c) sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum, int threads) {
+  for_pixel_chunks(sum.pixels.size() / 4, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      if (live.live(i))
+        for (size_t c = 0; c < 4; ++c) sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+  });
 }
 
 }  // namespace
@@ -49,7 +61,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
       if (t.name == COLOUR_TARGET) clear = t.clear;
     return run_ray_pass_resolved(*ray, pc, clear, stats, counts, evals);
   }
-  CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
+  CpuTargets targets(plan_targets(plan), ctx.width, ctx.height, s.threads);
   targets.clear();
   for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
@@ -63,12 +75,14 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     for (size_t p = 0; p < plan.passes.size(); ++p)
       run_pass(plan.passes[p], pc, targets, stats, &caches[p]);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
-    add_live(colour, live, sum);
-    if (i & 1) add_live(colour, live, sum_odd);
+    add_live(colour, live, sum, s.threads);
+    if (i & 1) add_live(colour, live, sum_odd, s.threads);
     if (evals) {
       const ImageRGBA& e = targets.get(SDF_EVALS_TARGET, "resolve");
-      for (size_t k = 0; k < evals->size(); ++k)
-        if (live.live(k)) (*evals)[k] += e.pixels[k * 4];
+      for_pixel_chunks(evals->size(), s.threads, [&](size_t begin, size_t end) {
+        for (size_t k = begin; k < end; ++k)
+          if (live.live(k)) (*evals)[k] += e.pixels[k * 4];
+      });
     }
   }
   // Times 1 / count, as the samples' mean always was; alpha is coverage, 1 for every frame.

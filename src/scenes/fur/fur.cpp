@@ -42,6 +42,12 @@ class FurScene : public Scene {
     if (params_.surface != SURFACE_COLOUR) return noSurface(params_.surface);
     return params_.hit_mask ? glm::vec3(0.0f) : BACKGROUND;
   }
+  // Every ray of the background sees the same colour, which radiance() gives without the ray: one
+  // call a packet instead of one a lane (this pass covers every pixel of every sample).
+  void radiance_packet(const RayPacket& rays, glm::vec3* out, RayStats& stats) const override {
+    const glm::vec3 c = radiance(rays.ray(0), stats);
+    for (int i = 0; i < rays.count; ++i) out[i] = c;
+  }
   std::vector<ShaderUniform> shader_uniforms() const override {
     return {{"u_hit_mask", 1, {params_.hit_mask ? 1.0f : 0.0f}},
             {"u_surface", 1, {float(params_.surface)}}};
