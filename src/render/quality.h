@@ -60,7 +60,7 @@ AdaptiveSampling adaptive_preset(Quality q);
 // pixels hold an edge, a strut or a star.
 bool small_frame(int width, int height);
 // The preset for a frame of this size: `final` on a small frame starts every pixel at 4 samples
-// and goes to 28 (adaptive_preset(Quality::Final) below that size), which is also what the bench's
+// and goes to 28 (on larger ones adaptive_preset(Quality::Final)), which is also what the bench's
 // `final` runs there (fixed 16 samples at 160x90 stayed under 40 dB).
 AdaptiveSampling adaptive_preset(Quality q, int width, int height);
 std::optional<Quality> parse_quality(const std::string& name);

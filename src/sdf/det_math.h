@@ -244,6 +244,37 @@ constexpr float SQRT_HALF = 0.707106781186548f;
 constexpr float LOG_OF_ZERO = -FLT_MAX;       // stands in for -Inf: exp(LOG_OF_ZERO) = 0
 constexpr float POW_ZERO_NEGATIVE = FLT_MAX;  // stands in for +Inf (0 to a negative power)
 
+// The minimax polynomials of exp (on the reduced argument r) and log (on the mantissa m - 1, with
+// z = m * m), one template for the scalar functions and their lanes (sdf/lanes_exp_log.h).
+template <class T>
+inline T exp_polynomial(T r) {
+  const T z = r * r;
+  return (((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r +
+            4.1665795894e-2f) *
+               r +
+           1.6666665459e-1f) *
+              r +
+          5.0000001201e-1f) *
+             z +
+         r + 1.0f;
+}
+template <class T>
+inline T log_polynomial(T m, T z) {
+  return ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
+               1.2420140846e-1f) *
+                  m +
+              1.4249322787e-1f) *
+                 m -
+             1.6668057665e-1f) *
+                m +
+            2.0000714765e-1f) *
+               m -
+           2.4999993993e-1f) *
+              m +
+          3.3333331174e-1f) *
+         m * z;
+}
+
 // 2^k for integer k in [-126, 127], built from the exponent bits.
 inline float exp2_int(int k) {
   return bits_float(uint32_t(k + 127) << 23);
@@ -255,15 +286,7 @@ inline float exp(float x) {
   const float k = std::floor(x * LOG2E + 0.5f);  // in [-126, 128]
   float r = x - k * LN2_HI;
   r = r - k * LN2_LO;
-  const float z = r * r;
-  const float p = (((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r +
-                     4.1665795894e-2f) *
-                        r +
-                    1.6666665459e-1f) *
-                       r +
-                   5.0000001201e-1f) *
-                      z +
-                  r + 1.0f;
+  const float p = exp_polynomial(r);
   // 2^k in two factors so that k = 128 and k = -126 stay within normal exponents.
   const float k1 = std::floor(k * 0.5f);
   return p * exp2_int(int(k1)) * exp2_int(int(k - k1));
@@ -289,19 +312,7 @@ inline float log(float x) {
     m = m - 1.0f;
   }
   const float z = m * m;
-  float y = ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
-                  1.2420140846e-1f) *
-                     m +
-                 1.4249322787e-1f) *
-                    m -
-                1.6668057665e-1f) *
-                   m +
-               2.0000714765e-1f) *
-                  m -
-              2.4999993993e-1f) *
-                 m +
-             3.3333331174e-1f) *
-            m * z;
+  float y = log_polynomial(m, z);
   const float fe = float(e);
   y = y + LN2_LO * fe;
   y = y - 0.5f * z;

@@ -40,15 +40,7 @@ inline F8 exp(F8 x) {
   const F8 k = floor(x * LOG2E + 0.5f);
   F8 r = x - k * LN2_HI;
   r = r - k * LN2_LO;
-  const F8 z = r * r;
-  const F8 p = (((((1.9875691500e-4f * r + 1.3981999507e-3f) * r + 8.3334519073e-3f) * r +
-                  4.1665795894e-2f) *
-                     r +
-                 1.6666665459e-1f) *
-                    r +
-                5.0000001201e-1f) *
-                   z +
-               r + 1.0f;
+  const F8 p = exp_polynomial(r);
   const F8 k1 = floor(k * 0.5f);
   const F8 v = p * exp2_int(to_int(k1)) * exp2_int(to_int(k - k1));
   return select(underflow, splat(0.0f), v);
@@ -67,19 +59,7 @@ inline F8 log(F8 x) {
   e = e + below;  // -1 where below
   m = select(below, m + m - 1.0f, m - 1.0f);
   const F8 z = m * m;
-  F8 y = ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
-               1.2420140846e-1f) *
-                  m +
-              1.4249322787e-1f) *
-                 m -
-             1.6668057665e-1f) *
-                m +
-            2.0000714765e-1f) *
-               m -
-           2.4999993993e-1f) *
-              m +
-          3.3333331174e-1f) *
-         m * z;
+  F8 y = log_polynomial(m, z);
   const F8 fe = to_float(e);
   y = y + LN2_LO * fe;
   y = y - 0.5f * z;

@@ -3,6 +3,7 @@
 #include "scenes/light_beams/crossings.h"
 #include "scenes/light_beams/render.h"
 #include "scenes/light_beams/visibility.h"
+#include "sdf/lanes_exp_log.h"
 
 namespace sdfreel::light_beams {
 namespace {
@@ -40,28 +41,7 @@ P8 select8(M8 m, P8 a, P8 b) {
   return {select(m, a.x, b.x), select(m, a.y, b.y)};
 }
 
-// ---- det_math's atan2 and asin, lane by lane ----
-F8 atan_unit8(F8 t) {
-  const M8 big = t > dm::TAN_PI_8;
-  const F8 base = select(big, splat(dm::QUARTER_PI), splat(0.0f));
-  t = select(big, (t - 1.0f) / (t + 1.0f), t);
-  const F8 z = t * t;
-  return base + ((((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
-                  3.33329491539e-1f) *
-                     z * t +
-                 t);
-}
-
-F8 atan2_8(F8 y, F8 x) {
-  const F8 ax = dm::abs(x), ay = dm::abs(y);
-  const F8 hi = dm::max(ax, ay), lo = dm::min(ax, ay);
-  F8 a = atan_unit8(lo / hi);
-  a = select(ay > ax, dm::HALF_PI - a, a);
-  a = select(x < 0.0f, dm::PI - a, a);
-  a = select(y < 0.0f, -a, a);
-  return select(hi == 0.0f, splat(0.0f), a);
-}
-
+// ---- det_math's asin, lane by lane (atan2: sdf/lanes_exp_log.h) ----
 F8 asin_kernel8(F8 s) {
   const F8 z = s * s;
   return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
@@ -111,7 +91,7 @@ P8 corePoint8(P8 p, const Shape& s) {
 }
 
 F8 angleFrom8(P8 n, P8 v) {
-  return atan2_8(cross8(n, v), dot8(n, v));
+  return dm::atan2(cross8(n, v), dot8(n, v));
 }
 
 P8 discSpan8(P8 p, P8 n, vec2 c, float r) {
