@@ -50,9 +50,9 @@ void view_pixels(float* rgba, size_t n) {
   size_t i = 0;
   for (; i + LANES <= n; i += LANES) {
     float* p = rgba + i * 4;
-    V3x8 c;
-    for (int k = 0; k < LANES; ++k) c.set_lane(k, {p[k * 4], p[k * 4 + 1], p[k * 4 + 2]});
-    const V3x8 out = Eight(c);
+    float r[LANES], g[LANES], b[LANES];
+    for (int k = 0; k < LANES; ++k) r[k] = p[k * 4], g[k] = p[k * 4 + 1], b[k] = p[k * 4 + 2];
+    const V3x8 out = Eight(V3x8(load8(r), load8(g), load8(b)));
     for (int k = 0; k < LANES; ++k)
       p[k * 4] = out.x[k], p[k * 4 + 1] = out.y[k], p[k * 4 + 2] = out.z[k];
   }

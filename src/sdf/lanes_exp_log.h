@@ -2,7 +2,8 @@
 // exp, log, pow, atan2 of det_math.h on eight lanes: each lane performs the scalar function's
 // operations in its order, both sides of every branch computed and one selected, so a lane has
 // the scalar's bits for every input, NaN, infinities and denormals included
-// (tests/sdf/lanes_exp_log_test.cpp). The display transform runs on them (io/aces_sdr_video.cpp).
+// (tests/sdf/lanes_exp_log_test.cpp). The display transform runs on them (io/aces_sdr_video.cpp),
+// and water_lily's and light_beams' lanes use atan2.
 #include <cfloat>
 #include <cstdint>
 
@@ -15,8 +16,8 @@ typedef uint32_t U8 __attribute__((vector_size(32)));
 
 namespace dm {
 
-// Lane twins of exp2_int, float_bits, bits_float and the float <-> int conversions (truncating,
-// as the scalar int(x) does).
+// exp2_int on lanes, and int(x) (truncating) and float(k) under one name for floats and lanes, so
+// one template serves both.
 inline F8 exp2_int(M8 k) {
   return reinterpret_cast<F8>(reinterpret_cast<U8>(k + 127) << 23);
 }

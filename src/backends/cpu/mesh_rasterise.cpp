@@ -77,7 +77,7 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     f8.front_facing = frag.front_facing;
     f8.inputs = frag.inputs;
     f8.count = count;
-    FragmentColours8 c;
+    FragmentColours8 c{};
     pass.shade8(f8, c);
     for (int k = 0; k < count; ++k)
       write(waiting[k].x, waiting[k].y, waiting[k].z, glm::vec4(c.r[k], c.g[k], c.b[k], c.a[k]));

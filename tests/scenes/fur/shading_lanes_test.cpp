@@ -21,7 +21,7 @@ bool same_bits(float a, float b) {
 
 MeshFragments8 random_fragments(std::mt19937& rng, const glm::vec4& instance_data) {
   std::uniform_real_distribution<float> u(-1.5f, 1.5f);
-  MeshFragments8 f;
+  MeshFragments8 f{};
   for (int k = 0; k < LANES; ++k) {
     f.world_position.set_lane(k, glm::vec3(u(rng), u(rng) + 1.0f, u(rng)));
     f.world_normal.set_lane(k, glm::vec3(u(rng), u(rng), u(rng)));
@@ -35,7 +35,7 @@ MeshFragments8 random_fragments(std::mt19937& rng, const glm::vec4& instance_dat
 
 template <class Lanes, class One>
 int mismatches(const MeshFragments8& f, Lanes lanes, One one) {
-  FragmentColours8 c;
+  FragmentColours8 c{};
   lanes(f, c);
   int bad = 0;
   for (int k = 0; k < LANES; ++k) {
@@ -76,7 +76,7 @@ TEST(FurShadingLanes, ShellsHaveTheBitsOfOneFragment) {
       bad += mismatches(
           f, [&](const MeshFragments8& x, FragmentColours8& c) { shade_shell8(look, x, c); },
           [&](const MeshFragment& x) { return shade_shell(look, x); });
-      FragmentColours8 c;
+      FragmentColours8 c{};
       shade_shell8(look, f, c);
       for (int k = 0; k < LANES; ++k) (c.a[k] > 0.0f ? kept : gaps) += 1;
     }
@@ -111,7 +111,7 @@ TEST(FurShadingLanes, StrandHashInLanes) {
   std::uniform_int_distribution<int> cell(-100000, 100000);
   int bad = 0;
   for (int rep = 0; rep < 5000; ++rep) {
-    M8 x, y;
+    M8 x{}, y{};
     for (int k = 0; k < LANES; ++k) x[k] = cell(rng), y[k] = cell(rng);
     const F8 r = strand_random(x, y);
     for (int k = 0; k < LANES; ++k) bad += !same_bits(r[k], strand_random(int(x[k]), int(y[k])));
