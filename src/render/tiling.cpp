@@ -28,6 +28,12 @@ void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn
   });
 }
 
+void for_each_range(size_t n, size_t chunk, int threads,
+                    const std::function<void(size_t begin, size_t end)>& fn) {
+  for_each_index((n + chunk - 1) / chunk, threads,
+                 [&](size_t k) { fn(k * chunk, std::min(n, (k + 1) * chunk)); });
+}
+
 void for_each_tile(int width, int height, int tile_size, int threads,
                    const std::function<void(const Tile&)>& fn) {
   const int tiles_x = (width + tile_size - 1) / tile_size;

@@ -15,6 +15,11 @@ struct Tile {
 // work items differ a lot in cost); in order on the calling thread when threads is 1 or n < 2.
 void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn);
 
+// Runs fn(begin, end) over [0, n) in consecutive ranges of `chunk` items (the last may be shorter)
+// on `threads` threads: for passes over a frame's pixels that each pixel does on its own.
+void for_each_range(size_t n, size_t chunk, int threads,
+                    const std::function<void(size_t begin, size_t end)>& fn);
+
 int tile_count(int width, int height, int tile_size);
 void for_each_tile(int width, int height, int tile_size, int threads,
                    const std::function<void(const Tile&)>& fn);

@@ -244,8 +244,9 @@ constexpr float SQRT_HALF = 0.707106781186548f;
 constexpr float LOG_OF_ZERO = -FLT_MAX;       // stands in for -Inf: exp(LOG_OF_ZERO) = 0
 constexpr float POW_ZERO_NEGATIVE = FLT_MAX;  // stands in for +Inf (0 to a negative power)
 
-// The minimax polynomials of exp (on the reduced argument r) and log (on the mantissa m - 1, with
-// z = m * m), one template for the scalar functions and their lanes (sdf/lanes_exp_log.h).
+// exp's minimax polynomial on the reduced argument r, and log's value from the reduced mantissa
+// m - 1 and the exponent e (as a float): one template for the scalar functions and their lanes
+// (sdf/lanes_exp_log.h).
 template <class T>
 inline T exp_polynomial(T r) {
   const T z = r * r;
@@ -259,20 +260,26 @@ inline T exp_polynomial(T r) {
          r + 1.0f;
 }
 template <class T>
-inline T log_polynomial(T m, T z) {
-  return ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
-               1.2420140846e-1f) *
-                  m +
-              1.4249322787e-1f) *
-                 m -
-             1.6668057665e-1f) *
-                m +
-            2.0000714765e-1f) *
-               m -
-           2.4999993993e-1f) *
-              m +
-          3.3333331174e-1f) *
-         m * z;
+inline T log_of_reduced(T m, T fe) {
+  const T z = m * m;
+  T y = ((((((((7.0376836292e-2f * m - 1.1514610310e-1f) * m + 1.1676998740e-1f) * m -
+              1.2420140846e-1f) *
+                 m +
+             1.4249322787e-1f) *
+                m -
+            1.6668057665e-1f) *
+               m +
+           2.0000714765e-1f) *
+              m -
+          2.4999993993e-1f) *
+             m +
+         3.3333331174e-1f) *
+        m * z;
+  y = y + LN2_LO * fe;
+  y = y - 0.5f * z;
+  T r = m + y;
+  r = r + LN2_HI * fe;
+  return r;
 }
 
 // 2^k for integer k in [-126, 127], built from the exponent bits.
@@ -311,14 +318,7 @@ inline float log(float x) {
   } else {
     m = m - 1.0f;
   }
-  const float z = m * m;
-  float y = log_polynomial(m, z);
-  const float fe = float(e);
-  y = y + LN2_LO * fe;
-  y = y - 0.5f * z;
-  float r = m + y;
-  r = r + LN2_HI * fe;
-  return r;
+  return log_of_reduced(m, float(e));
 }
 
 inline float pow(float x, float y) {

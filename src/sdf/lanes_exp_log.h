@@ -59,14 +59,7 @@ inline F8 log(F8 x) {
   const M8 below = m < SQRT_HALF;
   e = e + below;  // -1 where below
   m = select(below, m + m - 1.0f, m - 1.0f);
-  const F8 z = m * m;
-  F8 y = log_polynomial(m, z);
-  const F8 fe = to_float(e);
-  y = y + LN2_LO * fe;
-  y = y - 0.5f * z;
-  F8 r = m + y;
-  r = r + LN2_HI * fe;
-  return select(not_positive, splat(LOG_OF_ZERO), r);
+  return select(not_positive, splat(LOG_OF_ZERO), log_of_reduced(m, to_float(e)));
 }
 
 // pow with a uniform exponent, the case of every caller.

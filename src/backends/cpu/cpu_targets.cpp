@@ -7,6 +7,10 @@
 
 namespace sdfreel {
 
+namespace {
+constexpr size_t kPixelsPerTask = 1 << 14;  // pixels a clearing task fills
+}  // namespace
+
 CpuTargets::CpuTargets(const std::vector<TargetSpec>& specs, int width, int height, int threads)
     : specs_(specs), threads_(threads) {
   for (const TargetSpec& s : specs_)
@@ -29,10 +33,9 @@ void CpuTargets::clear_where(bool per_sample_only) {
     if (per_sample_only && s.per_frame) continue;
     const glm::vec4 c = s.kind == TargetKind::Depth ? glm::vec4(1.0f) : s.clear;
     std::vector<float>& px = images_.at(s.name).pixels;
-    // A frame's targets are tens of megabytes, cleared before every sample: in parallel chunks.
-    const size_t n = px.size() / 4, chunk = 1 << 14;
-    for_each_index((n + chunk - 1) / chunk, threads_, [&](size_t k) {
-      for (size_t i = k * chunk * 4, end = std::min(n, (k + 1) * chunk) * 4; i < end; i += 4) {
+    // A frame's targets are tens of megabytes, cleared before every sample: in parallel ranges.
+    for_each_range(px.size() / 4, kPixelsPerTask, threads_, [&](size_t begin, size_t end) {
+      for (size_t i = begin * 4; i < end * 4; i += 4) {
         px[i] = c.x;
         px[i + 1] = c.y;
         px[i + 2] = c.z;

@@ -1,7 +1,5 @@
 #include "backends/cpu/plan_runner.h"
 
-#include <algorithm>
-#include <functional>
 #include <stdexcept>
 
 #include "backends/cpu/cpu_image_pass.h"
@@ -15,16 +13,12 @@ namespace sdfreel {
 
 namespace {
 
-// fn(begin, end) over [0, n) pixels in chunks on `threads` threads: each pixel's own sums.
-void for_pixel_chunks(size_t n, int threads, const std::function<void(size_t, size_t)>& fn) {
-  const size_t chunk = 1 << 14;
-  for_each_index((n + chunk - 1) / chunk, threads,
-                 [&](size_t k) { fn(k * chunk, std::min(n, (k + 1) * chunk)); });
-}
+// Pixels a task of the per-sample sums adds up.
+constexpr size_t kPixelsPerTask = 1 << 14;
 
 // Adds the sample's colour (all four channels, as the fixed sum always did) to live pixels.
 void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum, int threads) {
-  for_pixel_chunks(sum.pixels.size() / 4, threads, [&](size_t begin, size_t end) {
+  for_each_range(sum.pixels.size() / 4, kPixelsPerTask, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
       if (live.live(i))
         for (size_t c = 0; c < 4; ++c) sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
@@ -79,7 +73,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     if (i & 1) add_live(colour, live, sum_odd, s.threads);
     if (evals) {
       const ImageRGBA& e = targets.get(SDF_EVALS_TARGET, "resolve");
-      for_pixel_chunks(evals->size(), s.threads, [&](size_t begin, size_t end) {
+      for_each_range(evals->size(), kPixelsPerTask, s.threads, [&](size_t begin, size_t end) {
         for (size_t k = begin; k < end; ++k)
           if (live.live(k)) (*evals)[k] += e.pixels[k * 4];
       });
