@@ -4,7 +4,7 @@
 
 #include "cli/commands_impl.h"
 #include "scenes/registry.h"
-#include "scenes/scene_passes.h"
+#include "scenes/scene_reference.h"
 #include "timeline/suggest.h"
 #include "timeline/toml_reader.h"
 
@@ -12,18 +12,10 @@ namespace sdfreel {
 
 namespace {
 
-std::string format_values(const std::vector<double>& v) {
-  std::string s;
-  char b[32];
-  for (size_t i = 0; i < v.size(); ++i) {
-    std::snprintf(b, sizeof b, "%g", v[i]);
-    s += (i ? ", " : "") + std::string(b);
-  }
-  return v.size() > 1 ? "[" + s + "]" : s;
-}
-
-int run_scenes(const std::string& name) {
+int run_scenes(const std::string& name, bool markdown) {
   if (name.empty()) {
+    if (markdown)
+      throw UsageError("--markdown needs a scene name: `sdfreel scenes NAME --markdown`");
     for (const SceneInfo& s : all_scenes())
       std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
     return 0;
@@ -36,19 +28,8 @@ int run_scenes(const std::string& name) {
     throw UsageError("unknown scene '" + name + "'" +
                      (hint.empty() ? "; `sdfreel scenes` lists them" : hint));
   }
-  std::printf("%s\n  %s\n\n", s->name.c_str(), s->description.c_str());
-  const CameraPose& c = s->default_camera;
-  std::printf("default camera: position = [%g, %g, %g], target = [%g, %g, %g], fov = %g\n",
-              c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z,
-              c.fov_deg);
-  std::printf("compositing passes ([output] passes): %s\n\n", join(scene_passes(*s), ", ").c_str());
-  std::printf("%-24s %-20s %-18s %s\n", "parameter", "default", "range", "meaning");
-  for (const ParamSpec& p : s->params) {
-    char range[64];
-    std::snprintf(range, sizeof range, "%g .. %g", p.min, p.max);
-    std::printf("%-24s %-20s %-18s %s\n", p.name.c_str(), format_values(p.def).c_str(), range,
-                p.doc.c_str());
-  }
+  const std::string text = markdown ? scene_reference_markdown(*s) : scene_reference_text(*s);
+  std::fputs(text.c_str(), stdout);
   return 0;
 }
 
@@ -56,9 +37,12 @@ int run_scenes(const std::string& name) {
 
 void add_scenes_command(CLI::App& app, int& status) {
   auto name = std::make_shared<std::string>();
+  auto markdown = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("scenes", "list scenes, or one scene's parameters");
   cmd->add_option("NAME", *name, "scene name");
-  cmd->callback([name, &status] { status = run_scenes(*name); });
+  cmd->add_flag("--markdown", *markdown,
+                "print the scene's reference as the Markdown of its page under docs/scenes/");
+  cmd->callback([name, markdown, &status] { status = run_scenes(*name, *markdown); });
 }
 
 }  // namespace sdfreel

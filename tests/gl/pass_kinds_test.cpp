@@ -4,7 +4,7 @@
 // runs at 320x180 and SAMPLES samples, summed by pass kind. The clock is the process's CPU time,
 // which counts llvmpipe's threads as well as ours: on a shared, loaded machine wall time measures
 // the scheduler more than the backends. Prints each pass and the CPU-against-llvmpipe ratio per
-// kind (README, "The museum"), and checks that the whole frames agree by Filament's rule.
+// kind (docs/scenes/museum.md, "Speed against llvmpipe"), and checks that the whole frames agree by Filament's rule.
 // Run: test_gl --gtest_filter='*PassKinds*'.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,8 @@
 // Every registered scene brings the files that make it a finished scene, found by name, so that a
 // scene registered without them fails here instead of being silently unchecked (the rules are in
 // docs/adding-a-scene.md): its code and GLSL in their folders, a timeline in timelines/, a golden,
-// a hard case, a picture under docs/ and a row in the README's scene table. And every scene folder
+// a hard case, a picture under docs/, a row in the README's scene table and a page under
+// docs/scenes/ whose reference (camera, passes, parameters) is the code's. And every scene folder
 // belongs to a registered scene (a misspelt folder would otherwise be skipped).
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "scenes/registry.h"
+#include "scenes/scene_reference.h"
 
 namespace sdfreel {
 namespace {
@@ -105,6 +107,17 @@ TEST_P(SceneFiles, HasARowInTheReadmeSceneTable) {
   const std::regex row("(^|\n)\\| `" + s + "` \\|");
   EXPECT_TRUE(std::regex_search(read(source("README.md")), row))
       << "README.md's scene table has no row starting with | `" << s << "` |";
+}
+
+// The page's generated block is what `sdfreel scenes NAME --markdown` prints today: a parameter
+// added, renamed or given a new default or range fails here until the page is regenerated.
+TEST_P(SceneFiles, HasAPageWhoseReferenceIsTheCodes) {
+  const std::string s = GetParam();
+  const fs::path page = source("docs/scenes/" + s + ".md");
+  ASSERT_TRUE(fs::exists(page)) << "missing docs/scenes/" << s << ".md (docs/adding-a-scene.md)";
+  EXPECT_NE(read(page).find(scene_reference_markdown(*find_scene(s))), std::string::npos)
+      << page << "'s reference block differs from `sdfreel scenes " << s
+      << " --markdown`; run scripts/update-scene-pages.sh";
 }
 
 std::vector<std::string> scene_names() {

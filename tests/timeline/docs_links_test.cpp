@@ -55,7 +55,7 @@ std::set<std::string> anchors(const std::string& markdown) {
 std::vector<fs::path> markdown_files() {
   const fs::path root(SDFREEL_SOURCE_DIR);
   std::vector<fs::path> files{root / "README.md"};
-  for (const auto& e : fs::directory_iterator(root / "docs"))
+  for (const auto& e : fs::recursive_directory_iterator(root / "docs"))
     if (e.path().extension() == ".md") files.push_back(e.path());
   return files;
 }

@@ -4,7 +4,7 @@
 //
 // The 2D world is the plane z = 0, seen by the timeline's [camera] like any 3D scene: the default
 // camera at (x, y, 1) looking at (x, y, 0) with fov = 90 shows the window centred on (x, y),
-// 2 units high; the camera's distance (or fov) zooms, roll turns the view (docs/light_beams.md).
+// 2 units high; the camera's distance (or fov) zooms, roll turns the view (docs/scenes/light_beams.md).
 //
 // Parameters (`sdfreel scenes light_beams`):
 //   light_intensity   HDR scale of every light, cores (white) and glow

@@ -26,7 +26,7 @@ constexpr int PAIR_APART = 1;          // disjoint: the side of a separating lin
 constexpr int PAIR_FIRST_INSIDE = 2;   // i inside j: j always first
 constexpr int PAIR_SECOND_INSIDE = 3;  // j inside i: i always first
 
-// How a pixel finds how much of a light it sees (README "Speed against error").
+// How a pixel finds how much of a light it sees (docs/scenes/light_beams.md, "Figures").
 enum Estimator {
   // The seed's shadow: one ray marched toward the light's closest point, lit or not.
   ESTIMATOR_SEED_RAY = 0,

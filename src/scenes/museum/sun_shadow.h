@@ -22,7 +22,7 @@
 
 namespace sdfreel::museum {
 
-constexpr int SUN_MAP_SIZE = 512;  // texels a side (README "The museum": measured)
+constexpr int SUN_MAP_SIZE = 512;  // texels a side (docs/scenes/museum.md: measured)
 constexpr const char* SUN_MAP_TARGET = "sun_shadow";
 constexpr const char* SUN_MAP_SAMPLER = "u_sun_shadow";
 
