@@ -1,8 +1,9 @@
 #pragma once
 // Two backends side by side per scene, from one bench run: seconds per frame of each at the same
-// preset, their ratio, and each one's PSNR against the reference. CPU against llvmpipe (README
-// "CPU against llvmpipe") carries the target: the CPU at most half the time at equal or
-// lower error. EGL against OSMesa (both llvmpipe) should be equal within noise, at the same PSNR.
+// preset, their ratio, and each one's PSNR against the reference. CPU against llvmpipe
+// (docs/performance.md, "CPU against llvmpipe") carries the target: the CPU at most half
+// the time at equal or lower error. EGL against OSMesa (both llvmpipe) should be equal within
+// noise, at the same PSNR.
 #include <string>
 #include <vector>
 

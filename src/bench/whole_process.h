@@ -3,7 +3,7 @@
 // `sdfreel render TIMELINE --frames F --no-video --backend B` (frames and hashes written), on each
 // backend, the backends alternating within each repetition so that load from elsewhere lands on
 // all of them; medians. The table gives each backend's time against the CPU's: the ratio the
-// README's "CPU against llvmpipe" column quotes, in one command.
+// docs/performance.md's "CPU against llvmpipe" table quotes, in one command.
 #include <string>
 #include <vector>
 

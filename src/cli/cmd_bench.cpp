@@ -50,7 +50,7 @@ namespace {
 using bench::BenchConfig;
 using bench::BenchRow;
 
-// The targets for the presets (README "Speed against error").
+// The targets for the presets (docs/performance.md, "Speed against error").
 constexpr double FINAL_MIN_PSNR_DB = 40.0;
 constexpr double DRAFT_MIN_SPEEDUP = 4.0;
 
@@ -273,8 +273,8 @@ void print_preset_check(const std::vector<BenchRow>& rows) {
                 f->psnr_db >= FINAL_MIN_PSNR_DB ? "ok  " : "MISS", speedup,
                 speedup >= DRAFT_MIN_SPEEDUP ? "ok" : "MISS");
   }
-  // CPU against llvmpipe, when both ran (README "CPU against llvmpipe"), and the GL platforms
-  // against each other.
+  // CPU against llvmpipe, when both ran (docs/performance.md, "CPU against llvmpipe"), and the GL
+  // platforms against each other.
   for (const char* gl : {"gl", "egl", "osmesa"}) {
     const std::vector<bench::BackendComparison> cmp = bench::compare_backends(rows, "cpu", gl);
     if (!cmp.empty())

@@ -2,7 +2,7 @@
 // One camera model for every pass kind: ray passes trace rays through the image positions that
 // mesh passes project to, and both write the same depth for the same point.
 //
-// DEPTH CONVENTION (both backends, every pass kind; README "Frames as passes"):
+// DEPTH CONVENTION (both backends, every pass kind; docs/architecture.md, "Frames as passes"):
 // - View space is right-handed: the eye at the origin looking down -Z, +X right, +Y up; the rows
 //   of the view matrix are CameraBasis right, up and -forward.
 // - The projection is OpenGL's perspective (vertical field of view of the pose, aspect

@@ -51,8 +51,8 @@ int naive_preset_samples() {
   return preset_samples(Quality::Final);
 }
 
-// `final`'s numbers are the default timeline's, measured with the bench (README "Adaptive
-// sampling"); draft's and reference's are not tuned.
+// `final`'s numbers are the default timeline's, measured with the bench (docs/performance.md,
+// "Adaptive sampling"); draft's and reference's are not tuned.
 AdaptiveSampling adaptive_preset(Quality q) {
   switch (q) {
     case Quality::Draft:
@@ -69,9 +69,9 @@ bool small_frame(int width, int height) {
   return int64_t(width) * height < int64_t(320) * 180;
 }
 
-// The lanterns at 160x90 (README "Adaptive sampling"): 42.3 dB in 0.9x the time of fixed 16
-// samples (39.9 dB). A minimum of 4, since two first samples too often miss a star or a distant
-// lantern and look converged; a maximum of 28, where R2's points are spread well.
+// The lanterns at 160x90 (docs/performance.md, "Adaptive sampling"): 42.3 dB in 0.9x the time of
+// fixed 16 samples (39.9 dB). A minimum of 4, since two first samples too often miss a star or a
+// distant lantern and look converged; a maximum of 28, where R2's points are spread well.
 AdaptiveSampling adaptive_preset(Quality q, int width, int height) {
   if (q == Quality::Final && small_frame(width, height))
     return AdaptiveSampling{true, 4, 28, 0.008f};

@@ -49,8 +49,8 @@ float footprint_angle(float tan_half_fov, int height);
 MarchSettings march_settings(Quality q);
 // The `naive` bench preset: plain sphere tracing with a fixed world-space epsilon.
 MarchSettings naive_march_settings();
-// Samples per pixel at which the bench measured a preset (README "Speed against error"): a
-// preset's error budget holds at this sample count or more.
+// Samples per pixel at which the bench measured a preset (docs/performance.md, "Speed against
+// error"): a preset's error budget holds at this sample count or more.
 int preset_samples(Quality q);
 int naive_preset_samples();
 // Adaptive sampling of a preset (timeline `adaptive = true`; render/adaptive_sampling.h), enabled,

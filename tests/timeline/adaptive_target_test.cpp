@@ -13,7 +13,7 @@ struct Measured {
   double db;
 };
 
-// The lanterns at 1280x720, frames 60, 180, 300, final with adaptive 1..16 (README).
+// The lanterns at 1280x720, frames 60, 180, 300, final with adaptive 1..16 (docs/performance.md).
 const Measured LANTERNS[] = {{0.005f, 47.24}, {0.01f, 46.47}, {0.015f, 45.97}, {0.02f, 45.51},
                              {0.025f, 45.07}, {0.04f, 43.63}, {0.07f, 41.54}};
 

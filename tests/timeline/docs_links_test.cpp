@@ -1,7 +1,8 @@
 // No broken link between the README and the pages under docs/: every relative link or picture of
-// a Markdown file names a file that exists, and every #anchor a heading of the page it points to
-// (GitHub's slugs: lower case, spaces to '-', other punctuation dropped). Links to the web are
-// not followed.
+// a Markdown file (Markdown's `](target)` or HTML's `href="target"` and `src="target"`, as the
+// README's gallery uses) names a file that exists, and every #anchor a heading of the page it
+// points to (GitHub's slugs: lower case, spaces to '-', other punctuation dropped). Links to the
+// web are not followed.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -61,13 +62,15 @@ std::vector<fs::path> markdown_files() {
 }
 
 TEST(DocsLinks, EveryRelativeLinkAndAnchorResolves) {
-  const std::regex link(R"(\]\(([^)\s]+)\))");
+  const std::string markdown_link = R"(\]\(([^)\s]+)\))";
+  const std::string html_link = "(?:href|src)=\"([^\"]+)\"";
+  const std::regex link(markdown_link + "|" + html_link);
   int checked = 0;
   for (const fs::path& file : markdown_files()) {
     const std::string text = read_text(file);
     for (auto it = std::sregex_iterator(text.begin(), text.end(), link);
          it != std::sregex_iterator(); ++it) {
-      const std::string target = (*it)[1];
+      const std::string target = (*it)[1].matched ? (*it)[1].str() : (*it)[2].str();
       if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0) continue;
       const size_t hash = target.find('#');
       const std::string path = target.substr(0, hash);
@@ -84,7 +87,7 @@ TEST(DocsLinks, EveryRelativeLinkAndAnchorResolves) {
           << " has the anchor #" << anchor;
     }
   }
-  EXPECT_GT(checked, 50);  // the README alone links to dozens of pages and pictures
+  EXPECT_GT(checked, 150);  // the README and the index alone link to dozens of pages and pictures
 }
 
 }  // namespace
