@@ -6,7 +6,7 @@
 #                headers and its run-time drivers (EGL and Mesa's llvmpipe; OSMesa where the
 #                release still ships it)
 #   --test       also what scripts/test.sh needs: GoogleTest, stock ffmpeg, clang with its
-#                sanitizer and libFuzzer runtime, git, cpack's dpkg tools
+#                sanitizer and libFuzzer runtime, git, cpack's dpkg tools, man
 #   --embree     also Intel Embree 3, which only the optional mesh-method comparison uses
 #                (tools/mesh_method_bench, docs/mesh-method.md)
 set -euo pipefail
@@ -27,6 +27,7 @@ test_packages=(
   ffmpeg   # stock ffmpeg/ffprobe check our framemd5 and stream tags
   opencolorio-tools
   file dpkg-dev   # cpack -G DEB: dpkg-shlibdeps derives the package's library dependencies
+  man-db   # the install test runs `man sdfreel` on the installed page
   # scripts/fuzz.sh (libFuzzer, ASan, UBSan) and scripts/build-matrix.sh: the release's default
   # clang and its runtime (libclang-rt-14-dev on Debian 12, libclang-rt-19-dev on Debian 13)
   clang 'libclang-rt-dev|libclang-rt-19-dev|libclang-rt-14-dev'

@@ -24,6 +24,7 @@ int run_cli(int argc, char** argv) {
   add_slurm_command(app, status);
   add_interlace_command(app, status);
   add_devices_command(app, status);
+  add_generate_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

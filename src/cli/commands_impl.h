@@ -20,6 +20,7 @@ void add_bench_command(CLI::App& app, int& status);
 void add_slurm_command(CLI::App& app, int& status);
 void add_interlace_command(CLI::App& app, int& status);
 void add_devices_command(CLI::App& app, int& status);
+void add_generate_command(CLI::App& app, int& status);
 void add_check_command(CLI::App& app, int& status);
 void add_map_command(CLI::App& app, int& status);
 

@@ -4,6 +4,7 @@
 # a folder holding only that timeline, with no SDFREEL_* variables, on every backend; their
 # frames.framemd5 must equal the build tree's. Then, with share/sdfreel taken away, the installed
 # binary must fail: it found its data in its prefix, not in the source tree it was built from.
+# Both also hold the man page, which `man sdfreel` shows, and the bash completion.
 # Usage: install_test.sh BUILD_DIR CMAKE CPACK BACKEND...
 set -euo pipefail
 build=$1 cmake=$2 cpack=$3
@@ -78,6 +79,20 @@ renders_like_the_build_tree() {  # PREFIX LABEL
 }
 renders_like_the_build_tree "$tmp/prefix" install
 renders_like_the_build_tree "$tmp/deb/usr" deb
+
+# The man page and the bash completion come with both installs, and `man sdfreel` shows the page.
+command -v man >/dev/null || fail "man is not installed (scripts/install-deps.sh --test installs man-db)"
+for prefix in "$tmp/prefix" "$tmp/deb/usr"; do
+  [ -f "$prefix/share/man/man1/sdfreel.1.gz" ] || fail "$prefix: no share/man/man1/sdfreel.1.gz"
+  [ -f "$prefix/share/bash-completion/completions/sdfreel" ] ||
+    fail "$prefix: no share/bash-completion/completions/sdfreel"
+  MANPATH="$prefix/share/man" MANPAGER=cat MANWIDTH=80 man sdfreel >"$tmp/man.txt" 2>"$tmp/man.log" ||
+    fail "$prefix: man sdfreel: $(cat "$tmp/man.log")"
+  grep -q "EXIT STATUS" "$tmp/man.txt" || fail "$prefix: man sdfreel shows no EXIT STATUS"
+  bash -c "source '$prefix/share/bash-completion/completions/sdfreel'; complete -p sdfreel" >/dev/null ||
+    fail "$prefix: the bash completion does not register for sdfreel"
+done
+echo "man sdfreel: $(head -n 1 "$tmp/man.txt" | tr -s ' ')"
 
 # Without its data the installed binary must fail, whatever the source tree holds: the OCIO config
 # (every backend needs it), then the shaders (gl).
