@@ -1,6 +1,7 @@
 #include "scenes/lenticular_card/card.h"
 
 #include "scenes/common/surface_output.h"
+#include "scenes/lenticular_card/card_shading.h"
 #include "scenes/lenticular_card/optics.h"
 #include "sdf/det_math.h"
 #include "sdf/lanes.h"
@@ -10,18 +11,6 @@ namespace {
 
 using glm::vec2;
 using glm::vec3;
-
-constexpr float BIG = 3.0e38f;
-constexpr float HIT_ID_CARD = 1.0f, HIT_ID_STAND = 2.0f;
-constexpr float AMBIENT = 0.25f, KEY = 1.1f;
-constexpr float RIDGE_SLOPE = 0.35f;  // the lens profile's normal tilt at a lens edge
-// The noise map is stretched along the lenses (the seed stretches it along y): few cycles along
-// the card's height, one across each lens.
-constexpr float RIDGE_NOISE_ACROSS = 0.0625f, RIDGE_NOISE_ALONG = 1.5f;
-constexpr float F0 = 0.048f;  // ((n - 1) / (n + 1))^2 for n = 1.56
-constexpr float SHININESS = 60.0f, SPECULAR = 0.6f;
-const vec3 PAPER(0.72f, 0.70f, 0.66f), EDGE(0.09f, 0.09f, 0.1f), WOOD(0.12f, 0.075f, 0.045f);
-const vec3 ENV_LOW(0.05f, 0.045f, 0.04f), ENV_HIGH(0.65f, 0.68f, 0.75f);
 
 float dot3(const vec3& a, const vec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
@@ -43,17 +32,7 @@ vec3 environment(const vec3& r) {
 // The sheet's normal: the lens profile across each lens plus the stretched noise map.
 vec3 ridgeNormal(float lens_coord, float across, float y, const CardUniforms& u,
                  const CardTextures& tex) {
-  const glm::vec4 n =
-      sampleBilinear(*tex.ridges, vec2(lens_coord * RIDGE_NOISE_ACROSS, y * RIDGE_NOISE_ALONG));
-  return normalize3(vec3(across * RIDGE_SLOPE + n.x * u.ridge_noise, n.y * u.ridge_noise, 1.0f));
-}
-
-// texelFetchRepeat(*tex.print, column, row), through tex.print_by_strip when there is one.
-glm::vec4 print_texel(const CardTextures& tex, int views, float column, float row) {
-  if (!tex.print_by_strip) return texelFetchRepeat(*tex.print, column, row);
-  const int x = wrap_texel(column, tex.print->width), y = wrap_texel(row, tex.print->height);
-  const float* c = tex.print_by_strip->at(x / views, (x % views) * tex.print->height + y);
-  return glm::vec4(c[0], c[1], c[2], c[3]);
+  return normalize3(ridge_tilt(lens_coord, across, y, u, tex));
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "scenes/lenticular_card/exhibit.h"
 
 #include "render/camera_model.h"
+#include "render/quality.h"
 #include "scenes/common/uniform_list.h"
+#include "scenes/lenticular_card/card_lanes.h"
 #include "scenes/lenticular_card/optics.h"
 
 namespace sdfreel::lenticular_card {
@@ -83,13 +85,29 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrint
   pass.scalar = [shade](const Ray& ray, glm::vec3& colour, float& depth, bool& keep, RayStats&) {
     shade(ray, colour, depth, keep);
   };
-  pass.packet = [shade, u](const RayPacket& rays, RayPassOutput& out, RayStats&) {
+  pass.packet = [shade, u, cam, forward, print, ridges, by_strip](const RayPacket& rays,
+                                                                  RayPassOutput& out, RayStats&) {
     const M8 maybe = may_hit_card(rays, u);
-    for (int i = 0; i < rays.count; ++i)
-      if (lane(maybe, i))
-        shade(rays.ray(i), out.colour[i], out.depth[i], out.keep[i]);
-      else
-        out.keep[i] = false;  // what shadeCard says of a miss
+    if (u.hit_mask || u.surface != SURFACE_COLOUR) {  // ids and surfaces: one ray at a time
+      for (int i = 0; i < rays.count; ++i)
+        if (lane(maybe, i))
+          shade(rays.ray(i), out.colour[i], out.depth[i], out.keep[i]);
+        else
+          out.keep[i] = false;  // what shadeCard says of a miss
+      return;
+    }
+    M8 hit = maybe;
+    V3x8 colour;
+    F8 t;
+    if (any(maybe))
+      hit &= shadeCard_lanes(rays, u, CardTextures{print.get(), ridges.get(), by_strip.get()},
+                             colour, t);
+    for (int i = 0; i < rays.count; ++i) {
+      out.keep[i] = lane(hit, i);
+      if (!out.keep[i]) continue;
+      out.colour[i] = colour.lane(i);
+      out.depth[i] = hit_depth(cam, forward, rays.dir.lane(i), t[i]);
+    }
   };
   plan.passes.push_back(std::move(pass));
 }
