@@ -1,11 +1,12 @@
-// A frame's cost by pass on both backends, for the plans of several passes (the museum and its
-// exhibits alone): CPU seconds of each pass from timing prefixes of the plan (the first pass
-// alone, then the first two, ...; a pass costs its prefix minus the one before), medians of RUNS
-// runs at 320x180 and SAMPLES samples, summed by pass kind. The clock is the process's CPU time,
-// which counts llvmpipe's threads as well as ours: on a shared, loaded machine wall time measures
-// the scheduler more than the backends. Prints each pass and the CPU-against-llvmpipe ratio per
-// kind (docs/scenes/museum.md, "Speed against llvmpipe"), and checks that the whole frames agree by Filament's rule.
-// Run: test_gl --gtest_filter='*PassKinds*'.
+// A frame's cost by pass on both backends, for the plans of several passes (the museum and the
+// fur; the lenticular card is one pass, its bits held by the agreement test): CPU seconds of each
+// pass from timing prefixes of the plan (the first pass alone, then the first two, ...; a pass
+// costs its prefix minus the one before), medians of RUNS runs at 320x180 and SAMPLES samples,
+// summed by pass kind. The clock is the process's CPU time, which counts llvmpipe's threads as well
+// as ours: on a shared, loaded machine wall time measures the scheduler more than the backends.
+// Prints each pass and the CPU-against-llvmpipe ratio per kind (docs/scenes/museum.md, "Speed
+// against llvmpipe"), and checks that the whole frames agree by Filament's rule. Run: test_gl
+// --gtest_filter='*PassKinds*'.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -117,9 +118,7 @@ TEST_P(PassKinds, TimesPerPassAndKindAndTheFramesAgree) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PassKinds,
-                         ::testing::Values(SceneTime{"museum", 2.0},
-                                           SceneTime{"lenticular_card", 2.0},
-                                           SceneTime{"fur", 2.0}),
+                         ::testing::Values(SceneTime{"museum", 2.0}, SceneTime{"fur", 2.0}),
                          [](const ::testing::TestParamInfo<SceneTime>& i) {
                            return std::string(i.param.scene);
                          });

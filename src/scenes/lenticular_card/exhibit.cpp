@@ -59,8 +59,8 @@ std::vector<ShaderUniform> card_shader_uniforms(const CardUniforms& u) {
   return list.uniforms();
 }
 
-void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrints& prints,
-                        const CardLook& look, const FrameContext& ctx) {
+RayPass card_ray_pass(const FramePlan& plan, const glm::mat4& model, const CardPrints& prints,
+                      const CardLook& look, const FrameContext& ctx) {
   CardUniforms u = card_uniforms(model, prints, look, ctx.scene_time);
   u.hit_mask = ctx.march.hit_mask;
   u.surface = ctx.march.surface;
@@ -109,7 +109,12 @@ void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrint
       out.depth[i] = hit_depth(cam, forward, rays.dir.lane(i), t[i]);
     }
   };
-  plan.passes.push_back(std::move(pass));
+  return pass;
+}
+
+void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrints& prints,
+                        const CardLook& look, const FrameContext& ctx) {
+  plan.passes.push_back(card_ray_pass(plan, model, prints, look, ctx));
 }
 
 }  // namespace sdfreel::lenticular_card

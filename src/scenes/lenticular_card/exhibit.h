@@ -29,6 +29,12 @@ CardUniforms card_uniforms(const glm::mat4& model, const CardPrints& prints, con
 // The GLSL uniforms of those constants (u_card_*).
 std::vector<ShaderUniform> card_shader_uniforms(const CardUniforms& u);
 
+// The card's ray pass ("lenticular card", shaders/lenticular_card/card_pass.glsl): discarded where
+// a ray misses, else the colour and the hit's window depth, depth tested and written. Make it
+// after the plan's near and far planes are set: the depth uses them.
+RayPass card_ray_pass(const FramePlan& plan, const glm::mat4& model, const CardPrints& prints,
+                      const CardLook& look, const FrameContext& ctx);
+
 // Appends the card's ray pass ("lenticular card", shaders/lenticular_card/card_pass.glsl) to
 // `plan`. Call after the plan's near and far planes are set: the depth it writes uses them.
 void add_exhibit_passes(FramePlan& plan, const glm::mat4& model, const CardPrints& prints,

@@ -15,7 +15,8 @@
 //   ridge_noise     strength of the noise normal map on the lens ridges
 //   scroll_period   seconds from one print to the next (hold, then slide)
 //   scroll_hold     share of the period the print holds still before it slides
-// The card and stand are one ray pass (exhibit.h) that the museum hall reuses on its plinth.
+// The card and stand are one ray pass (exhibit.h) that the museum hall reuses on its plinth; here
+// it and the backdrop are one pass.
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
@@ -58,27 +59,44 @@ class LenticularCardScene : public Scene {
       return colour;
     return backdrop(ray, light_, card_.hit_mask, card_.surface);
   }
+  // One ray pass, the card over the backdrop: where the card's own pass would pass its depth
+  // test (LESS against the cleared depth, 1) its colour, elsewhere the backdrop's. The same
+  // pixels as the backdrop pass followed by the card's, with no depth target, so the CPU traces
+  // every sample of a pixel in one packet (cpu_ray_pass_resolved.h); GL runs the same in
+  // lenticular_card.glsl.
   FramePlan frame_plan(const FrameContext& ctx) const override {
     FramePlan plan;
-    RayPass back;
-    back.name = "backdrop";
+    const RayPass card = card_ray_pass(plan, model_, *prints_, look_, ctx);
     const glm::vec3 light = light_;
     const bool mask = card_.hit_mask;
     const int surface = card_.surface;
-    back.scalar = [light, mask, surface](const Ray& ray, glm::vec3& colour, float&, bool& keep,
-                                         RayStats&) {
-      colour = backdrop(ray, light, mask, surface);
+    RayPass scene;
+    scene.name = "lenticular card over its backdrop";
+    scene.uniforms = card.uniforms;
+    scene.scalar = [card = card.scalar, light, mask, surface](const Ray& ray, glm::vec3& colour,
+                                                              float&, bool& keep, RayStats& stats) {
+      float depth = 1.0f;
+      bool hit = false;
+      card(ray, colour, depth, hit, stats);
+      if (!(hit && depth < 1.0f)) colour = backdrop(ray, light, mask, surface);
       keep = true;
     };
-    back.packet = [light, mask, surface](const RayPacket& rays, RayPassOutput& out, RayStats&) {
-      const V3x8 colour = backdrop(rays, light, mask, surface);
+    scene.packet = [card = card.packet, light, mask, surface](const RayPacket& rays,
+                                                              RayPassOutput& out, RayStats& stats) {
+      card(rays, out, stats);
+      bool backdrop_seen = false;
       for (int i = 0; i < rays.count; ++i) {
-        out.colour[i] = colour.lane(i);
-        out.keep[i] = true;
+        out.keep[i] = out.keep[i] && out.depth[i] < 1.0f;  // now: the card is seen
+        backdrop_seen |= !out.keep[i];
       }
+      if (backdrop_seen) {
+        const V3x8 back = backdrop(rays, light, mask, surface);
+        for (int i = 0; i < rays.count; ++i)
+          if (!out.keep[i]) out.colour[i] = back.lane(i);
+      }
+      for (int i = 0; i < rays.count; ++i) out.keep[i] = true;
     };
-    plan.passes.push_back(std::move(back));
-    add_exhibit_passes(plan, model_, *prints_, look_, ctx);
+    plan.passes.push_back(std::move(scene));
     return plan;
   }
   std::vector<ShaderUniform> shader_uniforms() const override {
