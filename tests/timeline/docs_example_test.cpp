@@ -1,5 +1,6 @@
 // docs/timeline.md is the users' reference: its complete example must parse, with every table
-// and key it shows, so the page cannot drift from the parser.
+// and key it shows, so the page cannot drift from the parser. The README's flythrough, the first
+// timeline a newcomer copies, must parse too.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -53,6 +54,15 @@ TEST_F(DocsExample, TheTimelinePageExampleParsesWithEveryTable) {
   EXPECT_TRUE(tl.camera.constant_speed);
   ASSERT_TRUE(tl.time.has_value());
   EXPECT_EQ(tl.params.size(), 4u);
+}
+
+TEST_F(DocsExample, TheReadmeFlythroughParses) {
+  const std::vector<std::string> blocks = toml_blocks(read_doc("README.md"));
+  ASSERT_FALSE(blocks.empty()) << "README.md has no ```toml flythrough";
+  const Timeline tl = load_timeline(all_scenes(), write(blocks.front()), nullptr);
+  EXPECT_EQ(tl.scene, "water_lily");
+  EXPECT_EQ(tl.camera.keys.size(), 2u);
+  EXPECT_EQ(tl.video, "my_flight.mp4");
 }
 
 }  // namespace
