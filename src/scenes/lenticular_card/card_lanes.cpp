@@ -25,10 +25,9 @@ M8 hitBox(const vec3& o, const V3x8& d, const vec3& c, const vec3& h, F8& t, F8&
   for (int i = 0; i < 3; ++i) {
     const M8 parallel = dir[i] == 0.0f;
     if (dm::abs(o[i] - c[i]) > h[i]) outside_parallel_slab |= parallel;
-    F8 t0 = (c[i] - h[i] - o[i]) / dir[i], t1 = (c[i] + h[i] - o[i]) / dir[i];
-    const M8 swap = t0 > t1;
-    const F8 lo = select(swap, t1, t0), hi = select(swap, t0, t1);
-    t0 = lo, t1 = hi;
+    const F8 a = (c[i] - h[i] - o[i]) / dir[i], b = (c[i] + h[i] - o[i]) / dir[i];
+    const M8 swap = a > b;
+    const F8 t0 = select(swap, b, a), t1 = select(swap, a, b);
     const M8 nearer = ~parallel & (t0 > t_near), farther = ~parallel & (t1 < t_far);
     t_near = select(nearer, t0, t_near);
     axis = select(nearer, splat(float(i)), axis);

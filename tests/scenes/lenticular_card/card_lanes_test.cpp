@@ -12,21 +12,11 @@
 
 #include "scenes/lenticular_card/card.h"
 #include "scenes/lenticular_card/exhibit.h"
+#include "scenes/lenticular_card/random_prints.h"
 #include "scenes/lenticular_card/textures.h"
 
 namespace sdfreel::lenticular_card {
 namespace {
-
-CardPrints random_prints(std::mt19937& rng) {
-  std::vector<Rgb8Image> a, b;
-  for (int v = 0; v < 6; ++v) {
-    Rgb8Image va(11, 7), vb(11, 7);
-    for (uint8_t& x : va.rgb) x = uint8_t(rng());
-    for (uint8_t& x : vb.rgb) x = uint8_t(rng());
-    a.push_back(va), b.push_back(vb);
-  }
-  return make_card_prints(a, b);
-}
 
 // A direction toward `at` from a random side, sometimes exactly along an axis (parallel slabs).
 glm::vec3 direction(std::mt19937& rng, const glm::vec3& from, const glm::vec3& at) {
@@ -45,7 +35,7 @@ glm::vec3 direction(std::mt19937& rng, const glm::vec3& from, const glm::vec3& a
 
 TEST(CardLanes, EachLaneIsShadeCardsRay) {
   std::mt19937 rng(29);
-  const CardPrints prints = random_prints(rng);
+  const CardPrints prints = random_prints(rng, 6, 11, 7);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   const glm::mat4 turned =
       glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, 0.9f, -2.0f}), 0.7f,

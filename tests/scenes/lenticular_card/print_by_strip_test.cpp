@@ -8,6 +8,7 @@
 
 #include "scenes/lenticular_card/card.h"
 #include "scenes/lenticular_card/exhibit.h"
+#include "scenes/lenticular_card/random_prints.h"
 #include "scenes/lenticular_card/textures.h"
 
 namespace sdfreel::lenticular_card {
@@ -28,14 +29,7 @@ TEST(PrintByStrip, EveryTexelMovesToItsStrip) {
 
 TEST(PrintByStrip, CardShadingGivesTheSameBitsAsThroughThePrint) {
   std::mt19937 rng(11);
-  std::vector<Rgb8Image> a, b;
-  for (int v = 0; v < 7; ++v) {
-    Rgb8Image va(9, 5), vb(9, 5);
-    for (uint8_t& x : va.rgb) x = uint8_t(rng());
-    for (uint8_t& x : vb.rgb) x = uint8_t(rng());
-    a.push_back(va), b.push_back(vb);
-  }
-  const CardPrints prints = make_card_prints(a, b);
+  const CardPrints prints = random_prints(rng, 7, 9, 5);
   const CardTextures plain{prints.print.get(), prints.ridges.get()};
   const CardTextures strips{prints.print.get(), prints.ridges.get(), prints.print_by_strip.get()};
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
