@@ -1,6 +1,7 @@
-// The bash completion from the CLI's own definitions: the commands, each command's options, scene
-// names where a command takes one, and file names elsewhere (timelines first where a command
-// takes a TIMELINE).
+// The bash completion from the CLI's own definitions: the commands, each command's options, the
+// values of an option that takes one of a set (CLI11's IsMember: --backend, --quality), scene
+// names where a command takes one, and file names elsewhere (timelines where a command takes a
+// TIMELINE).
 #include <string>
 #include <vector>
 
@@ -38,6 +39,32 @@ std::string valued_options(CLI::App& app) {
   return w.empty() ? "--" : w.substr(1);
 }
 
+// "TEXT:{cpu,gl,egl,osmesa}" -> "cpu gl egl osmesa"; "" for a type name without a set.
+std::string choices(const std::string& type) {
+  const size_t open = type.find(":{"), close = type.rfind('}');
+  if (open == std::string::npos || close == std::string::npos || close < open) return "";
+  std::string w = type.substr(open + 2, close - open - 2);
+  for (char& c : w)
+    if (c == ',') c = ' ';
+  return w;
+}
+
+// A case arm "CMD:--option" per option of a set: the word after it completes from the set.
+std::string choice_cases(CLI::App& app) {
+  std::string arms;
+  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; }))
+    for (const CLI::Option* o : cmd->get_options([](const CLI::Option*) { return true; })) {
+      const std::string set = choices(o->get_type_name());
+      if (set.empty() || o->get_positional()) continue;
+      std::string pattern;
+      for (const std::string& sn : o->get_snames()) pattern += "|" + cmd->get_name() + ":-" + sn;
+      for (const std::string& l : o->get_lnames()) pattern += "|" + cmd->get_name() + ":--" + l;
+      arms += "    " + pattern.substr(1) + ") COMPREPLY=($(compgen -W '" + set +
+              "' -- \"$cur\")); return ;;\n";
+    }
+  return arms;
+}
+
 }  // namespace
 
 std::string bash_completion(CLI::App& app) {
@@ -68,6 +95,9 @@ std::string bash_completion(CLI::App& app) {
          "  if [[ $cur == -* ]]; then\n"
          "    COMPREPLY=($(compgen -W \"$opts\" -- \"$cur\")); return\n"
          "  fi\n"
+         "  case ${COMP_WORDS[1]}:$prev in\n" +
+         choice_cases(app) +
+         "  esac\n"
          "  case $prev in\n"
          "    " +
          valued_options(app) +

@@ -1,6 +1,6 @@
 // `sdfreel generate man|complete-bash` against `--help`: the man page names every command and
 // every option, man renders it without a warning, and the bash completion completes commands,
-// options, scene names and timelines.
+// options, the values of an option of a set, scene names and timelines.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -71,6 +71,8 @@ TEST(GenerateBash, CompletesCommandsOptionsScenesAndTimelines) {
   EXPECT_EQ(completions(script, "sdfreel still --sam"), "--sample-counts --samples\n");
   EXPECT_EQ(completions(script, "sdfreel scenes water"), "water_lily\n");
   EXPECT_EQ(completions(script, "sdfreel generate "), "man complete-bash\n");
+  EXPECT_EQ(completions(script, "sdfreel render --quality f"), "final\n");
+  EXPECT_EQ(completions(script, "sdfreel still --backend "), "cpu gl egl osmesa\n");
   EXPECT_EQ(completions(script, "sdfreel render timelines/water_lily_f"),
             "timelines/water_lily_flythrough.toml\n");
   // Every option of every command is offered after its command.
