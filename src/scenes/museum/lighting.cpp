@@ -94,7 +94,7 @@ float analytic_visibility(const vec3& p, const HallLight& light) {
 float sun_visibility(const vec3& p, const vec3& n, float ndl, const HallLight& light,
                      const SunMap& map) {
   const vec3 q = p + n * NORMAL_OFFSET;
-  return map.image ? sun_map_visibility(*map.image, *map.view, q, ndl)
+  return map.image ? sun_map_visibility(*map.image, *map.view, q, ndl, map.windows)
                    : analytic_visibility(q, light);
 }
 

@@ -31,6 +31,7 @@ struct HallLight {
 struct SunMap {
   const ImageRGBA* image = nullptr;
   const SunView* view = nullptr;
+  const SunMapWindows* windows = nullptr;  // optional: the image's windows (sun_map_windows.h)
 };
 
 // 0..1: how much of the sun a point p with unit normal n and ndl = dot(n, TO_SUN) > 0 sees: from

@@ -27,6 +27,7 @@
 //   exhibit_scale    exhibit 1's size (1 = sdf_morph's object, about 1 m tall)
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "io/cache_file.h"
@@ -109,13 +110,24 @@ MeshPass hall_pass(const HallLight& light, bool ids, int surface) {
   p.uniforms.push_back({"u_hit_mask", 1, {ids ? 1.0f : 0.0f}});
   p.uniforms.push_back({"u_surface", 1, {float(surface)}});
   p.inputs = {{SUN_MAP_TARGET, SUN_MAP_SAMPLER}};
-  p.shade = [light, ids, surface](const MeshFragment& f) {
+  // The map's windows, made by the first fragment that reads the map: the plan's setup passes
+  // have drawn it by then, and every run of this plan draws the same map (a pure function of the
+  // frame), so they hold for every sample.
+  struct Windows {
+    std::once_flag made;
+    SunMapWindows windows;
+  };
+  auto windows = std::make_shared<Windows>();
+  p.shade = [light, ids, surface, windows](const MeshFragment& f) {
     if (ids) return glm::vec4(glm::vec3(HIT_ID_HALL), 1.0f);
     if (surface != SURFACE_COLOUR)
       return glm::vec4(surfaceOutput(surface, glm::length(f.world_position - light.eye),
                                      glm::normalize(f.world_normal)),
                        1.0f);
-    const SunMap map{&(*f.inputs)[0], &sun_view()};
+    const ImageRGBA& image = (*f.inputs)[0];
+    std::call_once(windows->made,
+                   [&] { windows->windows = sun_map_windows(image, sun_view().size); });
+    const SunMap map{&image, &sun_view(), &windows->windows};
     return glm::vec4(hall_radiance(f.world_position, f.world_normal, glm::vec3(f.instance_data),
                                    f.instance_data.w, light, map),
                      1.0f);

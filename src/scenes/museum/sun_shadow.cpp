@@ -18,6 +18,7 @@ using glm::vec3;
 // from the plinths by it.
 constexpr int BOX_TEXELS = 5;
 constexpr int BOX_TAPS = BOX_TEXELS + 1;
+static_assert(BOX_TAPS == SUN_MAP_FILTER_TAPS);
 constexpr int MARGIN_TEXELS = 4;     // the filter reaches three texels out; one more for rounding
 constexpr float BIAS_TEXELS = 1.0f;  // constant depth bias, in texel widths along the beam
 // Slope-scaled: a surface at angle theta to the beam moves tan(theta) texels along it per texel
@@ -128,20 +129,31 @@ void box_weights(float t, int& k0, float w[BOX_TAPS]) {
   w[0] = 1.0f - f, w[BOX_TEXELS] = f;
 }
 
-float sun_map_visibility(const ImageRGBA& map, const SunView& s, const vec3& p, float ndl) {
+float sun_map_visibility(const ImageRGBA& map, const SunView& s, const vec3& p, float ndl,
+                         const SunMapWindows* windows) {
   const vec3 d = p - s.origin;
   // Far outside the map every tap is: behind the wall.
   const float far = float(BOX_TEXELS);
   const float tx =
       dm::clamp((glm::dot(d, s.right) - s.u0) * s.inv_texel, -far, float(s.size) + far);
   const float ty = dm::clamp((glm::dot(d, s.up) - s.v0) * s.inv_texel, -far, float(s.size) + far);
-  const float slope = dm::min(dm::sqrt(dm::max(1.0f - ndl * ndl, 0.0f)) / ndl, MAX_SLOPE);
-  const float bias = (BIAS_TEXELS + SLOPE_TEXELS * slope) * (s.texel * s.inv_depth_range);
-  const float ref = sun_map_depth(s, glm::dot(d, s.forward)) - bias;
   int x0, y0;
   float wx[BOX_TAPS], wy[BOX_TAPS];
   box_weights(tx, x0, wx);
   box_weights(ty, y0, wy);
+  // Every tap outside the map (behind the wall): the loop below counts none lit, its 0.
+  if (x0 + BOX_TEXELS < 0 || y0 + BOX_TEXELS < 0 || x0 >= s.size || y0 >= s.size) return 0.0f;
+  const float slope = dm::min(dm::sqrt(dm::max(1.0f - ndl * ndl, 0.0f)) / ndl, MAX_SLOPE);
+  const float bias = (BIAS_TEXELS + SLOPE_TEXELS * slope) * (s.texel * s.inv_depth_range);
+  const float ref = sun_map_depth(s, glm::dot(d, s.forward)) - bias;
+  // Every tap inside the map and of weight > 0 somewhere (the box's middle taps weigh 1): at most
+  // the window's least depth, all pass (the loop's 1); above its greatest, none (its 0).
+  const int starts = s.size - BOX_TAPS + 1;
+  if (windows && windows->size == s.size && x0 >= 0 && y0 >= 0 && x0 < starts && y0 < starts) {
+    const size_t k = size_t(y0) * size_t(starts) + size_t(x0);
+    if (ref <= windows->lo[k]) return 1.0f;
+    if (ref > windows->hi[k]) return 0.0f;
+  }
   float lit = 0.0f;
   int taps = 0, lit_taps = 0;  // of weight above 0: all lit is exactly 1, none exactly 0
   for (int j = 0; j < BOX_TAPS; ++j) {

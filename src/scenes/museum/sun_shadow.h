@@ -19,10 +19,12 @@
 
 #include "render/frame_plan.h"
 #include "render/image.h"
+#include "scenes/museum/sun_map_windows.h"
 
 namespace sdfreel::museum {
 
-constexpr int SUN_MAP_SIZE = 512;  // texels a side (docs/scenes/museum.md: measured)
+constexpr int SUN_MAP_SIZE = 512;       // texels a side (docs/scenes/museum.md: measured)
+constexpr int SUN_MAP_FILTER_TAPS = 6;  // texels a side the filter reads (a box 5 texels wide)
 constexpr const char* SUN_MAP_TARGET = "sun_shadow";
 constexpr const char* SUN_MAP_SAMPLER = "u_sun_shadow";
 
@@ -48,9 +50,12 @@ TargetSpec sun_map_target();
 // The depth-only pass of the hall's casters into the map.
 MeshPass sun_casters_pass();
 
-// 0..1: the share of the filter's nine texels that see the sun from p (normal n, ndl =
-// dot(n, TO_SUN) > 0), read from `map` (the target SUN_MAP_TARGET, CPU rows top-down).
-float sun_map_visibility(const ImageRGBA& map, const SunView& s, const glm::vec3& p, float ndl);
+// 0..1: the share of the filter's texels that see the sun from p (normal n, ndl =
+// dot(n, TO_SUN) > 0), read from `map` (the target SUN_MAP_TARGET, CPU rows top-down). With the
+// map's windows (sun_map_windows.h), fully lit and fully shadowed points skip the taps: the same
+// result.
+float sun_map_visibility(const ImageRGBA& map, const SunView& s, const glm::vec3& p, float ndl,
+                         const SunMapWindows* windows = nullptr);
 
 // u_sun_origin, u_sun_right, u_sun_up, u_sun_forward, u_sun_map (u0, v0, inv_texel, size),
 // u_sun_depth (near, inv_depth_range, texel * inv_depth_range).
