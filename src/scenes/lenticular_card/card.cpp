@@ -2,40 +2,12 @@
 
 #include "scenes/common/surface_output.h"
 #include "scenes/lenticular_card/card_shading.h"
-#include "scenes/lenticular_card/optics.h"
 #include "sdf/det_math.h"
 #include "sdf/lanes.h"
 
 namespace sdfreel::lenticular_card {
-namespace {
 
-using glm::vec2;
 using glm::vec3;
-
-float dot3(const vec3& a, const vec3& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-vec3 normalize3(const vec3& v) {
-  return v * (1.0f / dm::sqrt(dot3(v, v)));
-}
-
-vec3 matte(const vec3& albedo, const vec3& n, const vec3& light) {
-  return albedo * (AMBIENT + KEY * dm::max(dot3(n, light), 0.0f));
-}
-
-// What the glossy sheet reflects: a dark floor below, a bright room above.
-vec3 environment(const vec3& r) {
-  return dm::mix(ENV_LOW, ENV_HIGH, dm::smoothstep(-0.1f, 0.5f, r.y));
-}
-
-// The sheet's normal: the lens profile across each lens plus the stretched noise map.
-vec3 ridgeNormal(float lens_coord, float across, float y, const CardUniforms& u,
-                 const CardTextures& tex) {
-  return normalize3(ridge_tilt(lens_coord, across, y, u, tex));
-}
-
-}  // namespace
 
 vec3 to_local_point(const glm::mat4& m, const vec3& p) {
   return vec3(m[0][0] * p.x + m[1][0] * p.y + m[2][0] * p.z + m[3][0],
@@ -71,29 +43,7 @@ bool hitBox(const vec3& o, const vec3& d, const vec3& c, const vec3& h, float& t
 }
 
 vec3 frontColour(const vec3& p, const vec3& d, const CardUniforms& u, const CardTextures& tex) {
-  const float lenses = float(u.lenses), views = float(u.views), rows = float(u.view_height);
-  const float lens_coord = (p.x + CARD_HALF_WIDTH) * (lenses / (2.0f * CARD_HALF_WIDTH));
-  const float lens = dm::clamp(dm::floor(lens_coord), 0.0f, lenses - 1.0f);
-  const float across = lens_coord - lens - 0.5f;
-  // The viewing angle across the lenses: the view direction projected on the xz plane.
-  const float vx = -d.x, vz = -d.z;
-  const float len = dm::sqrt(vx * vx + vz * vz);
-  const float sin_theta = len > 0.0f ? vx / len : 0.0f;
-  const float x = seen_print_position(lens + 0.5f, sin_theta, u.ior, u.thickness);
-  const float column = dm::clamp(dm::floor(x * views), 0.0f, lenses * views - 1.0f);
-  const float down = (CARD_CENTRE_Y + CARD_HALF_HEIGHT - p.y) * (0.5f / CARD_HALF_HEIGHT);
-  const float row = dm::floor((down + u.scroll) * rows);
-  const vec3 albedo = vec3(print_texel(tex, u.views, column, row));
-  const vec3 n = ridgeNormal(lens_coord, across, p.y, u, tex);
-  const vec3 v = normalize3(-d);
-  const vec3 diffuse = albedo * (AMBIENT + KEY * dm::max(u.light.z, 0.0f));
-  const float cos_v = dm::max(dot3(n, v), 0.0f);
-  const float m = 1.0f - cos_v, m2 = m * m;
-  const float fresnel = F0 + (1.0f - F0) * (m2 * m2 * m);
-  const vec3 r = n * (2.0f * dot3(n, v)) - v;
-  const vec3 h = normalize3(u.light + v);
-  const float spec = SPECULAR * KEY * dm::pow(dm::max(dot3(n, h), 0.0f), SHININESS);
-  return diffuse * (1.0f - fresnel) + (environment(r) * fresnel + vec3(spec)) * u.gloss;
+  return front_colour<vec3, float>(p, d, u, tex);
 }
 
 M8 may_hit_card(const RayPacket& rays, const CardUniforms& u) {

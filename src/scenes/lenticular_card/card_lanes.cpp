@@ -1,20 +1,11 @@
 #include "scenes/lenticular_card/card_lanes.h"
 
 #include "scenes/lenticular_card/card_shading.h"
-#include "sdf/lanes_exp_log.h"
 
 namespace sdfreel::lenticular_card {
 namespace {
 
 using glm::vec3;
-
-V3x8 normalize3(const V3x8& v) {
-  return v * (1.0f / dm::sqrt(vdot(v, v)));
-}
-
-V3x8 matte(const vec3& albedo, const V3x8& n, const vec3& light) {
-  return V3x8(albedo) * (AMBIENT + KEY * dm::max(vdot(n, light), 0.0f));
-}
 
 // hitBox on eight lanes: the slab loop's updates as selects; a lane parallel to a slab skips it.
 M8 hitBox(const vec3& o, const V3x8& d, const vec3& c, const vec3& h, F8& t, F8& axis) {
@@ -35,45 +26,6 @@ M8 hitBox(const vec3& o, const V3x8& d, const vec3& c, const vec3& h, F8& t, F8&
   }
   t = t_near;
   return ~outside_parallel_slab & (axis >= 0.0f) & (t_near <= t_far) & (t_near > 0.0f);
-}
-
-// What the glossy sheet reflects (environment() of card.cpp).
-V3x8 environment(const V3x8& r) {
-  const F8 s = dm::smoothstep(-0.1f, 0.5f, r.y);
-  return V3x8(dm::mix(splat(ENV_LOW.x), splat(ENV_HIGH.x), s),
-              dm::mix(splat(ENV_LOW.y), splat(ENV_HIGH.y), s),
-              dm::mix(splat(ENV_LOW.z), splat(ENV_HIGH.z), s));
-}
-
-V3x8 frontColour(const V3x8& p, const V3x8& d, const CardUniforms& u, const CardTextures& tex) {
-  const float lenses = float(u.lenses), views = float(u.views), rows = float(u.view_height);
-  const F8 lens_coord = (p.x + CARD_HALF_WIDTH) * (lenses / (2.0f * CARD_HALF_WIDTH));
-  const F8 lens = dm::clamp(dm::floor(lens_coord), 0.0f, lenses - 1.0f);
-  const F8 across = lens_coord - lens - 0.5f;
-  const F8 vx = -d.x, vz = -d.z;
-  const F8 len = dm::sqrt(vx * vx + vz * vz);
-  const F8 sin_theta = select(len > 0.0f, vx / len, splat(0.0f));
-  const F8 s = sin_theta / u.ior;  // seen_print_position(lens + 0.5, ...), written out
-  const F8 x = (lens + 0.5f) - u.thickness * (s / dm::sqrt(1.0f - s * s));
-  const F8 column = dm::clamp(dm::floor(x * views), 0.0f, lenses * views - 1.0f);
-  const F8 down = (CARD_CENTRE_Y + CARD_HALF_HEIGHT - p.y) * (0.5f / CARD_HALF_HEIGHT);
-  const F8 row = dm::floor((down + u.scroll) * rows);
-  V3x8 albedo, n;
-  for (int i = 0; i < LANES; ++i) {  // texel reads: one lane at a time, as shadeCard reads them
-    albedo.set_lane(i, vec3(print_texel(tex, u.views, column[i], row[i])));
-    n.set_lane(i, ridge_tilt(lens_coord[i], across[i], p.y[i], u, tex));
-  }
-  n = normalize3(n);
-  const V3x8 v = normalize3(-d);
-  const V3x8 diffuse = albedo * (AMBIENT + KEY * dm::max(u.light.z, 0.0f));
-  const F8 n_dot_v = vdot(n, v);
-  const F8 cos_v = dm::max(n_dot_v, 0.0f);
-  const F8 m = 1.0f - cos_v, m2 = m * m;
-  const F8 fresnel = F0 + (1.0f - F0) * (m2 * m2 * m);
-  const V3x8 r = n * (2.0f * n_dot_v) - v;
-  const V3x8 h = normalize3(u.light + v);
-  const F8 spec = SPECULAR * KEY * dm::pow(dm::max(vdot(n, h), 0.0f), SHININESS);
-  return diffuse * (1.0f - fresnel) + (environment(r) * fresnel + V3x8(spec, spec, spec)) * u.gloss;
 }
 
 }  // namespace
@@ -105,7 +57,7 @@ M8 shadeCard_lanes(const RayPacket& rays, const CardUniforms& u, const CardTextu
   const M8 front = on_card & (axis == 2.0f) & (n.z > 0.0f);
   V3x8 c = select(on_card, select(axis == 2.0f, matte(PAPER, n, u.light), matte(EDGE, n, u.light)),
                   matte(WOOD, n, u.light));
-  if (any(front)) c = select(front, frontColour(o + d * t, d, u, tex), c);
+  if (any(front)) c = select(front, front_colour<V3x8, F8>(o + d * t, d, u, tex), c);
   colour = c;
   return card | base;
 }
