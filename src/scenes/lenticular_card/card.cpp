@@ -21,6 +21,12 @@ vec3 to_local_direction(const glm::mat4& m, const vec3& d) {
               m[0][2] * d.x + m[1][2] * d.y + m[2][2] * d.z);
 }
 
+V3x8 to_local_direction(const glm::mat4& m, const V3x8& d) {
+  return V3x8(m[0][0] * d.x + m[1][0] * d.y + m[2][0] * d.z,
+              m[0][1] * d.x + m[1][1] * d.y + m[2][1] * d.z,
+              m[0][2] * d.x + m[1][2] * d.y + m[2][2] * d.z);
+}
+
 bool hitBox(const vec3& o, const vec3& d, const vec3& c, const vec3& h, float& t, int& axis) {
   float t_near = -BIG, t_far = BIG;
   axis = -1;
@@ -49,10 +55,7 @@ vec3 frontColour(const vec3& p, const vec3& d, const CardUniforms& u, const Card
 M8 may_hit_card(const RayPacket& rays, const CardUniforms& u) {
   const glm::mat4& m = u.world_to_local;
   const vec3 o = to_local_point(m, rays.origin);
-  const V3x8& w = rays.dir;
-  const V3x8 d(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z,
-               m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
-               m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
+  const V3x8 d = to_local_direction(m, rays.dir);
   // The card's and the stand's boxes together, grown by 1 cm plus 1e-5 of the origin's distance.
   const float margin = 0.01f + 1e-5f * dm::max(dm::abs(o.x), dm::max(dm::abs(o.y), dm::abs(o.z)));
   const vec3 lo(-CARD_HALF_WIDTH - margin, -margin, -BASE_HALF_DEPTH - margin);

@@ -42,6 +42,7 @@ struct CardTextures {
 // local hit's t is the world ray's t.
 glm::vec3 to_local_point(const glm::mat4& m, const glm::vec3& p);
 glm::vec3 to_local_direction(const glm::mat4& m, const glm::vec3& d);
+V3x8 to_local_direction(const glm::mat4& m, const V3x8& d);  // the same, eight lanes
 
 // Nearest entry t > 0 of the ray into the box (centre c, half sizes h), and the face's axis
 // (0, 1, 2) in `axis`; false when it misses or starts inside.

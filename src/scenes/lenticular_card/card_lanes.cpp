@@ -34,10 +34,7 @@ M8 shadeCard_lanes(const RayPacket& rays, const CardUniforms& u, const CardTextu
                    V3x8& colour, F8& t) {
   const glm::mat4& m = u.world_to_local;
   const vec3 o = to_local_point(m, rays.origin);
-  const V3x8& w = rays.dir;
-  const V3x8 d(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z,
-               m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
-               m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
+  const V3x8 d = to_local_direction(m, rays.dir);
   F8 t_card, t_base, a_card, a_base;
   const M8 card =
       hitBox(o, d, vec3(0.0f, CARD_CENTRE_Y, 0.0f),
