@@ -312,6 +312,31 @@ bench::MicroTarget micro_target(const BenchTarget& t) {
   return m;
 }
 
+// --only with --micro: the distance functions whose names start with one of the prefixes; a
+// prefix that keeps nothing is a usage error naming the functions there are.
+void keep_only_functions(std::vector<bench::MicroTarget>& targets,
+                         const std::vector<std::string>& only) {
+  if (only.empty()) return;
+  std::string there;
+  for (bench::MicroTarget& t : targets) {
+    std::vector<DistanceFunction> keep;
+    for (DistanceFunction& fn : t.functions) {
+      there += " " + t.scene + "/" + fn.name;
+      for (const std::string& prefix : only)
+        if (fn.name.rfind(prefix, 0) == 0) {
+          keep.push_back(std::move(fn));
+          break;
+        }
+    }
+    t.functions = std::move(keep);
+  }
+  targets.erase(std::remove_if(targets.begin(), targets.end(),
+                               [](const bench::MicroTarget& t) { return t.functions.empty(); }),
+                targets.end());
+  if (targets.empty())
+    throw UsageError("--only: no distance function starts with that; there are" + there);
+}
+
 int run_micro(const BenchOptions& o) {
   if (o.repetitions < 1) throw UsageError("--repetitions must be at least 1");
   if (!(o.micro_min_time > 0.0)) throw UsageError("--micro-min-time must be positive");
@@ -320,6 +345,7 @@ int run_micro(const BenchOptions& o) {
     for (const SceneInfo& s : all_scenes()) names.push_back(s.name);
   std::vector<bench::MicroTarget> targets;
   for (const std::string& name : names) targets.push_back(micro_target(load_target(name, o)));
+  keep_only_functions(targets, o.only);
   std::vector<bench::MicroRow> rows;
   try {
     rows = bench::run_micro_benchmarks(targets, {o.repetitions, o.micro_min_time});
@@ -509,7 +535,9 @@ void add_bench_command(CLI::App& app, int& status) {
                   "kept")
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (default: all cores)");
-  cmd->add_option("--only", o->only, "run only configurations whose names start with these")
+  cmd->add_option(
+         "--only", o->only,
+         "run only configurations whose names start with these (with --micro: distance functions)")
       ->delimiter(',');
   cmd->add_flag("--presets-only", o->presets_only, "naive, draft and final only, no sweep");
   cmd->add_flag("--fresh-reference", o->fresh_reference,

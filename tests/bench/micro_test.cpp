@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "bench/micro_bench.h"
 #include "bench/micro_check.h"
@@ -160,6 +162,26 @@ TEST(MicroBenchCommand, WritesMicroCsvAndRejectsUnknownScenes) {
   for (std::string line; std::getline(f, line);) EXPECT_EQ(line.rfind("sdf_morph,", 0), 0u) << line;
   EXPECT_EQ(run_binary("bench --micro no_such_scene --out " + dir.string()), 2);
   EXPECT_EQ(run_binary("bench --micro sdf_morph --micro-min-time 0 --out " + dir.string()), 2);
+  std::filesystem::remove_all(dir);
+}
+
+// --only keeps the functions whose names start with a prefix (what scripts/count-flops.sh runs
+// under callgrind, one function at a time); a prefix that keeps none is a usage error.
+TEST(MicroBenchCommand, OnlyKeepsTheNamedFunctions) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("sdfreel_micro_only_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(run_binary("bench --micro sdf_morph lantern_festival --only mapObj,sdfW --repetitions "
+                       "1 --micro-min-time 0.01 --out " +
+                       dir.string()),
+            0);
+  std::ifstream f(dir / "micro.csv");
+  std::vector<std::string> kept;
+  for (std::string line; std::getline(f, line);)  // the first two fields: scene, function
+    kept.push_back(line.substr(0, line.find(',', line.find(',') + 1)));
+  EXPECT_EQ(kept, (std::vector<std::string>{"scene,function", "sdf_morph,mapObject",
+                                            "lantern_festival,sdfWater"}));
+  EXPECT_EQ(run_binary("bench --micro sdf_morph --only sdfWater --out " + dir.string()), 2);
   std::filesystem::remove_all(dir);
 }
 
