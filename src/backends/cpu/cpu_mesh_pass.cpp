@@ -50,9 +50,10 @@ void run_mesh_pass(const MeshPass& pass, const CpuPassContext& pc, CpuTargets& t
   const glm::ivec2 size(drawn.width, drawn.height);
   MeshPassCache::Data& d = cache.data();
   place_vertices(pass, pc.threads, d);
-  setup_batches(pass, view_projection(pass, pc), size, pc.tile_size, pc.threads, d);
+  const int tile_size = pc.mesh_tile_size();
+  setup_batches(pass, view_projection(pass, pc), size, tile_size, pc.threads, d);
   const VertexArrays placed = d.placed();
-  for_each_tile(size.x, size.y, pc.tile_size, pc.threads, [&](const Tile& t) {
+  for_each_tile(size.x, size.y, tile_size, pc.threads, [&](const Tile& t) {
     for (const TriangleBatch& b : d.batches) {  // in mesh order
       const VertexArrays clipped = b.clipped();
       for (unsigned i : b.bins[size_t(t.index)]) {
