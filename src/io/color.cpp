@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "io/distinct_pixels.h"
 #include "io/quantise16.h"
 #include "io/shipped_views.h"
 #include "render/data_files.h"
@@ -111,7 +112,7 @@ struct DisplayTransform::Impl {
       cpu->apply(desc);
       return;
     }
-    shipped(rgba, size_t(width) * rows);
+    convert_distinct(rgba, size_t(width) * rows, shipped);
   }
 };
 
