@@ -1,5 +1,7 @@
 #include "pipeline/frame_pipeline.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -87,8 +89,9 @@ RenderedFrame FramePipeline::render_context(const FrameContext& ctx) {
     f.display = display_.apply(f.linear);
   }
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  f.linear_hash = linear_half_hash(f.linear);
-  f.display_md5 = md5_rgb48le(f.display);
+  // Each hash reads its own image: both at once (a still, or a run's last frame, waits on them).
+  tbb::parallel_invoke([&] { f.linear_hash = linear_half_hash(f.linear); },
+                       [&] { f.display_md5 = md5_rgb48le(f.display); });
   return f;
 }
 
