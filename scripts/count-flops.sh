@@ -10,7 +10,8 @@
 # Prints one Markdown row per function, all per evaluation (per point: an eight-lane instruction
 # counts an eighth): instructions; floating-point operations (add, sub, mul, div, sqrt, each lane
 # counted; an FMA would count two), of which divisions and square roots; min/max lanes; and other
-# vector instructions (compares, selects, logic, conversions, shuffles). Needs valgrind and objdump (binutils).
+# vector instructions (compares, selects, logic, conversions, shuffles).
+# Needs valgrind and objdump (binutils).
 set -euo pipefail
 
 build=build

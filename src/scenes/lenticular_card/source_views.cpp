@@ -108,6 +108,8 @@ void sum_in_packets(const RayPass& pass, const FrameContext& ctx, float pixel_an
       packet.dir = primary_ray_dirs(ctx.camera, px, py, ctx.width, ctx.height);
       for (int k = 0; k < LANES; ++k) out.keep[k] = false, out.depth[k] = 1.0f;
       pass.packet(packet, out, stats);
+      // A lane the pass does not keep adds nothing, as the untouched black of the ray-by-ray
+      // path does.
       for (int k = 0; k < count; ++k)
         if (out.keep[k]) sum[size_t(y) * ctx.width + (base + k) / samples] += out.colour[k];
     }
