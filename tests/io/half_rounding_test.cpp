@@ -90,6 +90,24 @@ TEST(HalfRounding, RoundToHalfClampsThenRounds) {
   EXPECT_EQ(img.pixels, expected);
 }
 
+// Every length (the eight-value steps and the rest), every kind of value: the clamp then the
+// scalar rounding, bit for bit (-0 stays -0).
+TEST(HalfRounding, RoundToHalfGivesTheScalarBitsAtAnyLength) {
+  const float kinds[] = {-1.0f,    -0.0f,    0.0f,    1e-9f,     3.0e-8f,  6.1e-5f,
+                         0.1f,     0.5f,     1.0f,    2047.5f,   65504.0f, 65519.0f,
+                         65520.0f, 70000.0f, 3.4e38f, 1.0009766f};
+  for (size_t n = 0; n <= 40; ++n) {
+    ImageRGBA img(1, 1);
+    img.pixels.resize(n);
+    for (size_t i = 0; i < n; ++i) img.pixels[i] = kinds[(i * 7 + n) % 16];
+    std::vector<float> expected = img.pixels;
+    for (float& v : expected) v = float(Imath::half(v < 0.0f ? 0.0f : std::min(v, 65504.0f)));
+    round_to_half(img);
+    for (size_t i = 0; i < n; ++i)
+      ASSERT_EQ(bits_of(img.pixels[i]), bits_of(expected[i])) << n << " values, at " << i;
+  }
+}
+
 // quantise16 rounds v * 65535 half away from zero without a libm call: the same integers as
 // lround, at every step's boundary and across [0, 1].
 TEST(Quantise16, RoundsAsLround) {
