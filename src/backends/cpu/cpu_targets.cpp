@@ -30,7 +30,7 @@ void CpuTargets::clear_per_sample() {
 
 void CpuTargets::clear_where(bool per_sample_only) {
   for (const TargetSpec& s : specs_) {
-    if (per_sample_only && s.per_frame) continue;
+    if (per_sample_only && (s.per_frame || skipped_.count(s.name))) continue;
     const glm::vec4 c = s.kind == TargetKind::Depth ? glm::vec4(1.0f) : s.clear;
     std::vector<float>& px = images_.at(s.name).pixels;
     // A frame's targets are tens of megabytes, cleared before every sample: in parallel ranges.

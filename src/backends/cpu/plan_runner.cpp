@@ -16,13 +16,36 @@ namespace {
 // Pixels a task of the per-sample sums adds up.
 constexpr size_t kPixelsPerTask = 1 << 14;
 
-// Adds the sample's colour (all four channels, as the fixed sum always did) to live pixels.
-void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum, int threads) {
+// Adds the sample's colour (all four channels, as the fixed sum always did) to live pixels, and to
+// `odd` too when given (the odd samples' sum): one pass over the colour for both.
+void add_live(const ImageRGBA& colour, const LivePixels& live, ImageRGBA& sum, ImageRGBA* odd,
+              int threads) {
   for_each_range(sum.pixels.size() / 4, kPixelsPerTask, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
       if (live.live(i))
-        for (size_t c = 0; c < 4; ++c) sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+        for (size_t c = 0; c < 4; ++c) {
+          sum.pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+          if (odd) odd->pixels[i * 4 + c] += colour.pixels[i * 4 + c];
+        }
   });
+}
+
+// Whether anything reads the SDF-evaluation counts target: the caller, or a pass's input. When
+// nothing does, ray passes still write it, but clearing it before every sample changes nothing.
+bool evals_are_read(const FramePlan& plan, const std::vector<float>* evals) {
+  if (evals) return true;
+  auto reads = [](const std::vector<ImageInput>& inputs) {
+    for (const ImageInput& in : inputs)
+      if (in.target == SDF_EVALS_TARGET) return true;
+    return false;
+  };
+  for (const std::vector<Pass>* passes : {&plan.setup_passes, &plan.passes})
+    for (const Pass& pass : *passes) {
+      if (const auto* mesh = std::get_if<MeshPass>(&pass); mesh && reads(mesh->inputs)) return true;
+      if (const auto* image = std::get_if<ImagePass>(&pass); image && reads(image->inputs))
+        return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -57,6 +80,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
   }
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height, s.threads);
   targets.clear();
+  if (!evals_are_read(plan, evals)) targets.skip_per_sample_clear(SDF_EVALS_TARGET);
   for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
   LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
@@ -69,8 +93,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     for (size_t p = 0; p < plan.passes.size(); ++p)
       run_pass(plan.passes[p], pc, targets, stats, &caches[p]);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
-    add_live(colour, live, sum, s.threads);
-    if (i & 1) add_live(colour, live, sum_odd, s.threads);
+    add_live(colour, live, sum, (i & 1) ? &sum_odd : nullptr, s.threads);
     if (evals) {
       const ImageRGBA& e = targets.get(SDF_EVALS_TARGET, "resolve");
       for_each_range(evals->size(), kPixelsPerTask, s.threads, [&](size_t begin, size_t end) {
