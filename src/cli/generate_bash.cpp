@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_walk.h"
 #include "cli/generate.h"
 #include "scenes/registry.h"
 
@@ -14,15 +15,13 @@ namespace {
 
 std::string words_of(CLI::App& cmd) {
   std::string w;
-  for (const CLI::Option* o : cmd.get_options([](const CLI::Option*) { return true; })) {
-    for (const std::string& s : o->get_snames()) w += " -" + s;
-    for (const std::string& l : o->get_lnames()) w += " --" + l;
-  }
+  for (const CLI::Option* o : all_options(cmd))
+    for (const std::string& flag : flags_of(*o)) w += " " + flag;
   return w.empty() ? w : w.substr(1);
 }
 
 bool takes(CLI::App& cmd, const std::string& positional) {
-  for (const CLI::Option* o : cmd.get_options([](const CLI::Option*) { return true; }))
+  for (const CLI::Option* o : all_options(cmd))
     if (o->get_positional() && o->get_name(true) == positional) return true;
   return false;
 }
@@ -30,12 +29,10 @@ bool takes(CLI::App& cmd, const std::string& positional) {
 // Options that take a value: the word after them is that value, not a positional.
 std::string valued_options(CLI::App& app) {
   std::string w;
-  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; }))
-    for (const CLI::Option* o : cmd->get_options([](const CLI::Option*) { return true; }))
-      if (!o->get_positional() && o->get_items_expected_max() != 0) {
-        for (const std::string& s : o->get_snames()) w += "|-" + s;
-        for (const std::string& l : o->get_lnames()) w += "|--" + l;
-      }
+  for (CLI::App* cmd : all_commands(app))
+    for (const CLI::Option* o : all_options(*cmd))
+      if (!o->get_positional() && o->get_items_expected_max() != 0)
+        for (const std::string& flag : flags_of(*o)) w += "|" + flag;
   return w.empty() ? "--" : w.substr(1);
 }
 
@@ -52,13 +49,12 @@ std::string choices(const std::string& type) {
 // A case arm "CMD:--option" per option of a set: the word after it completes from the set.
 std::string choice_cases(CLI::App& app) {
   std::string arms;
-  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; }))
-    for (const CLI::Option* o : cmd->get_options([](const CLI::Option*) { return true; })) {
+  for (CLI::App* cmd : all_commands(app))
+    for (const CLI::Option* o : all_options(*cmd)) {
       const std::string set = choices(o->get_type_name());
       if (set.empty() || o->get_positional()) continue;
       std::string pattern;
-      for (const std::string& sn : o->get_snames()) pattern += "|" + cmd->get_name() + ":-" + sn;
-      for (const std::string& l : o->get_lnames()) pattern += "|" + cmd->get_name() + ":--" + l;
+      for (const std::string& flag : flags_of(*o)) pattern += "|" + cmd->get_name() + ":" + flag;
       arms += "    " + pattern.substr(1) + ") COMPREPLY=($(compgen -W '" + set +
               "' -- \"$cur\")); return ;;\n";
     }
@@ -70,7 +66,7 @@ std::string choice_cases(CLI::App& app) {
 std::string bash_completion(CLI::App& app) {
   std::string commands, cases, scenes;
   for (const SceneInfo& s : all_scenes()) scenes += (scenes.empty() ? "" : " ") + s.name;
-  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; })) {
+  for (CLI::App* cmd : all_commands(app)) {
     commands += (commands.empty() ? "" : " ") + cmd->get_name();
     const char* what = takes(*cmd, "TIMELINE")                       ? "timeline"
                        : takes(*cmd, "NAME") || takes(*cmd, "SCENE") ? "scene"

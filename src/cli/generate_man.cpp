@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_walk.h"
 #include "cli/generate.h"
 
 namespace sdfreel {
@@ -26,7 +27,7 @@ std::string roff(const std::string& text) {
 
 std::vector<const CLI::Option*> options_of(CLI::App& cmd, bool positional) {
   std::vector<const CLI::Option*> out;
-  for (const CLI::Option* o : cmd.get_options([](const CLI::Option*) { return true; }))
+  for (const CLI::Option* o : all_options(cmd))
     if (o->get_positional() == positional && !o->get_group().empty() &&
         o->get_lnames().size() + o->get_snames().size() + (positional ? 1 : 0) > 0 &&
         (positional || o->get_lnames() != std::vector<std::string>{"help"}))
@@ -46,10 +47,8 @@ std::string value_name(const std::string& type) {
 // "\fB\-o\fR, \fB\-\-output\fR \fITEXT\fR"
 std::string option_head(const CLI::Option& o) {
   std::string head;
-  for (const std::string& s : o.get_snames())
-    head += (head.empty() ? "" : ", ") + ("\\fB\\-" + s + "\\fR");
-  for (const std::string& l : o.get_lnames())
-    head += (head.empty() ? "" : ", ") + ("\\fB\\-\\-" + roff(l) + "\\fR");
+  for (const std::string& flag : flags_of(o))
+    head += (head.empty() ? "" : ", ") + ("\\fB" + roff(flag) + "\\fR");
   if (o.get_items_expected_max() != 0 && !o.get_type_name().empty())
     head += " \\fI" + roff(value_name(o.get_type_name())) + "\\fR";
   return head;
@@ -141,7 +140,7 @@ std::string man_page(CLI::App& app) {
       "timeline file (TOML), with every frame reproducible bit for bit. "
       "Every command prints its options with \\fB\\-\\-help\\fR.\n";
   out += ".SH COMMANDS\n";
-  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; })) {
+  for (CLI::App* cmd : all_commands(app)) {
     out += ".SS \"" + roff(synopsis(*cmd)) + "\"\n" + roff(cmd->get_description()) + "\n";
     for (const CLI::Option* p : options_of(*cmd, true))
       out += ".TP\n\\fI" + roff(p->get_name(true)) + "\\fR\n" + roff(p->get_description()) + "\n";
