@@ -58,6 +58,11 @@ struct RayPassOutput {
   float depth[LANES];
   bool keep[LANES];
   int32_t evals[LANES];
+
+  // Before a pass: every lane discarded at depth 1, as GL's fragment stage starts a fragment.
+  void start() {
+    for (int i = 0; i < LANES; ++i) keep[i] = false, depth[i] = 1.0f;
+  }
 };
 
 // A per-pixel function of a primary ray: what scenes were before plans. CPU: `packet` on packets

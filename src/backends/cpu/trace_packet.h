@@ -14,15 +14,8 @@ namespace sdfreel {
 inline void trace_packet(const RayPass& pass, const CpuPassContext& pc, const F8& x, const F8& y,
                          int count, RayPassOutput& result, RayStats& stats) {
   const FrameContext& f = pc.frame;
-  RayPacket packet;
-  packet.origin = f.camera.origin;
-  packet.pixel_angle = pc.pixel_angle;
-  packet.count = count;
-  packet.dir = primary_ray_dirs(f.camera, x, y, f.width, f.height);
-  for (int i = 0; i < LANES; ++i) {
-    result.keep[i] = false;
-    result.depth[i] = 1.0f;
-  }
+  const RayPacket packet = primary_packet(f.camera, pc.pixel_angle, x, y, count, f.width, f.height);
+  result.start();
   stats.lane_evals = splat_mask(false);
   pass.packet(packet, result, stats);
   for (int i = 0; i < LANES; ++i) result.evals[i] = stats.lane_evals[i];

@@ -101,13 +101,9 @@ void sum_in_packets(const RayPass& pass, const FrameContext& ctx, float pixel_an
         px[k] = float(pair / samples) + offset.x;
         py[k] = float(y) + offset.y;
       }
-      RayPacket packet;
-      packet.origin = ctx.camera.origin;
-      packet.pixel_angle = pixel_angle;
-      packet.count = count;
-      packet.dir = primary_ray_dirs(ctx.camera, px, py, ctx.width, ctx.height);
-      for (int k = 0; k < LANES; ++k) out.keep[k] = false, out.depth[k] = 1.0f;
-      pass.packet(packet, out, stats);
+      out.start();
+      pass.packet(primary_packet(ctx.camera, pixel_angle, px, py, count, ctx.width, ctx.height),
+                  out, stats);
       // A lane the pass does not keep adds nothing, as the untouched black of the ray-by-ray
       // path does.
       for (int k = 0; k < count; ++k)
