@@ -98,10 +98,13 @@ TEST(HalfRounding, RoundToHalfGivesTheScalarBitsAtAnyLength) {
                          65520.0f, 70000.0f, 3.4e38f, 1.0009766f};
   for (size_t n = 0; n <= 40; ++n) {
     ImageRGBA img(1, 1);
-    img.pixels.resize(n);
-    for (size_t i = 0; i < n; ++i) img.pixels[i] = kinds[(i * 7 + n) % 16];
-    std::vector<float> expected = img.pixels;
-    for (float& v : expected) v = float(Imath::half(v < 0.0f ? 0.0f : std::min(v, 65504.0f)));
+    img.pixels.clear();
+    std::vector<float> expected;
+    for (size_t i = 0; i < n; ++i) {
+      const float v = kinds[(i * 7 + n) % 16];
+      img.pixels.push_back(v);
+      expected.push_back(float(Imath::half(v < 0.0f ? 0.0f : std::min(v, 65504.0f))));
+    }
     round_to_half(img);
     for (size_t i = 0; i < n; ++i)
       ASSERT_EQ(bits_of(img.pixels[i]), bits_of(expected[i])) << n << " values, at " << i;
