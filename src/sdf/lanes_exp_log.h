@@ -1,9 +1,9 @@
 #pragma once
-// exp, log, pow, atan2 of det_math.h on eight lanes: each lane performs the scalar function's
+// exp, log, pow, atan2, acos of det_math.h on eight lanes: each lane performs the scalar function's
 // operations in its order, both sides of every branch computed and one selected, so a lane has
 // the scalar's bits for every input, NaN, infinities and denormals included
 // (tests/sdf/lanes_exp_log_test.cpp). The display transform runs on them (io/aces_sdr_video.cpp),
-// and water_lily's and light_beams' lanes use atan2.
+// water_lily's and light_beams' lanes use atan2, lantern_festival's sky atan2 and acos.
 #include <cfloat>
 #include <cstdint>
 
@@ -87,6 +87,24 @@ inline F8 atan2(F8 y, F8 x) {
   a = select(x < 0.0f, PI - a, a);
   a = select(y < 0.0f, -a, a);
   return select(hi == 0.0f, splat(0.0f), a);
+}
+
+inline F8 asin_kernel(F8 s) {
+  const F8 z = s * s;
+  return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
+           7.4953002686e-2f) *
+              z +
+          1.6666752422e-1f) *
+             z * s +
+         s;
+}
+
+inline F8 acos(F8 x) {
+  x = clamp(x, -1.0f, 1.0f);
+  const F8 below = PI - 2.0f * asin_kernel(sqrt(0.5f * (1.0f + x)));
+  const F8 above = 2.0f * asin_kernel(sqrt(0.5f * (1.0f - x)));
+  const F8 middle = HALF_PI - asin_kernel(abs(x)) * sign(x);
+  return select(x < -0.5f, below, select(x > 0.5f, above, middle));
 }
 
 }  // namespace dm

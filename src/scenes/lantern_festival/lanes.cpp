@@ -1,7 +1,7 @@
 // lantern_festival's eight-lane path, for every preset: the primary marches (lake, lanterns),
-// the water normal, the reflection and its march run in lanes; shading runs per lane with the
-// scalar functions. Every lane gets radiance()'s bits and stats
-// (tests/scenes/packet_path_test.cpp).
+// the water normal, the reflection and its march, and the sky run in lanes; the shading of lantern
+// and water hits runs per lane with the scalar functions. Every lane gets radiance()'s bits and
+// stats (tests/scenes/packet_path_test.cpp).
 #include "scenes/common/surface_output.h"
 #include "scenes/lantern_festival/march_lanes.h"
 #include "scenes/lantern_festival/scene.h"
@@ -94,16 +94,20 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
   // bounceOffWater in lanes.
   const M8 bounce = valid & water.hit & ~lantern.hit;
   WaterBounce bounces[LANES];
+  M8 bounce_hits = splat_mask(false);
+  V3x8 reflected(glm::vec3(0.0f));
   if (any(bounce)) {
     const V3x8 p = rays.origin + rays.dir * water.t;
     const V3x8 normal =
         waterNormal_lanes(field_.lake, p, normalEps_lanes(march_, water.t, rays.pixel_angle));
     const V3x8 r = rays.dir - normal * (2.0f * vdot(normal, rays.dir));
+    reflected = r;
     const MarchLimits lim_r = limits(march_.reflect_steps, rays.pixel_angle, 0.0f);
     const CellHitLanes h =
         marchLanterns_lanes(field_, march_, reference_march_, p, r, splat(march_.max_dist), lim_r,
                             water.t, bounce, stats);
     const M8 reflects_lantern = bounce & h.hit;
+    bounce_hits = reflects_lantern;
     V3x8 hit_normal(glm::vec3(0.0f));
     if (any(reflects_lantern))
       hit_normal = lanternNormal_lanes(field_.grid, h.cell, reflects_lantern, p + r * h.t,
@@ -112,8 +116,19 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
       bounces[i] = WaterBounce{p.lane(i), r.lane(i), CellHit{lane(h.hit, i), h.t[i], h.cell[i]},
                                hit_normal.lane(i)};
   }
+  // skySeen in lanes: the sky where the ray hits nothing, the blurred sky where the water's
+  // reflection hits no lantern.
+  const M8 on_sky = valid & ~water.hit & ~lantern.hit;
+  const M8 reflects_sky = bounce & ~bounce_hits;
+  V3x8 sky_seen(glm::vec3(0.0f));
+  if (any(on_sky)) sky_seen = skyFrom_lanes(sky_, *sky_.environment, rays.dir, on_sky);
+  if (any(reflects_sky))
+    sky_seen =
+        select(reflects_sky,
+               skyFrom_lanes(sky_, *sky_.environment_blurred, reflected, reflects_sky), sky_seen);
   for (int i = 0; i < rays.count; ++i)
-    out[i] = shadeHits(rays.ray(i), water_hit(i), lantern_hit(i), normal_lanes.lane(i), bounces[i]);
+    out[i] = shadeHits(rays.ray(i), water_hit(i), lantern_hit(i), normal_lanes.lane(i), bounces[i],
+                       sky_seen.lane(i));
 }
 
 }  // namespace sdfreel::lantern_festival

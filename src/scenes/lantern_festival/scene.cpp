@@ -174,9 +174,8 @@ WaterBounce LanternFestivalScene::bounceOffWater(const Ray& ray, float t, RaySta
   return b;
 }
 
-glm::vec3 LanternFestivalScene::shadeWater(const WaterBounce& b) const {
-  const glm::vec3 reflected =
-      b.hit.hit ? shadeLanternHit(b.p, b.r, b.hit, b.n) : skyReflected(sky_, b.r);
+glm::vec3 LanternFestivalScene::shadeWater(const WaterBounce& b, const glm::vec3& sky_seen) const {
+  const glm::vec3 reflected = b.hit.hit ? shadeLanternHit(b.p, b.r, b.hit, b.n) : sky_seen;
   return reflected * reflection_strength_ + water_color_;
 }
 
@@ -219,20 +218,28 @@ glm::vec3 LanternFestivalScene::radiance(const Ray& ray, RayStats& stats) const 
                   : glm::vec3(0.0f);
   WaterBounce bounce;
   if (seesWater(water, lantern)) bounce = bounceOffWater(ray, water.t, stats);
-  return shadeHits(ray, water, lantern, normal, bounce);
+  return shadeHits(ray, water, lantern, normal, bounce, skySeen(ray, water, lantern, bounce));
 }
 
 glm::vec3 LanternFestivalScene::hitMask(const MarchHit& water, const CellHit& lantern) const {
   return glm::vec3(lantern.hit ? HIT_ID_LANTERN : water.hit ? HIT_ID_WATER : HIT_ID_NONE);
 }
 
+glm::vec3 LanternFestivalScene::skySeen(const Ray& ray, const MarchHit& water,
+                                        const CellHit& lantern, const WaterBounce& bounce) const {
+  if (lantern.hit) return glm::vec3(0.0f);
+  if (water.hit) return bounce.hit.hit ? glm::vec3(0.0f) : skyReflected(sky_, bounce.r);
+  return sky(sky_, ray.dir);
+}
+
 glm::vec3 LanternFestivalScene::shadeHits(const Ray& ray, const MarchHit& water,
                                           const CellHit& lantern, const glm::vec3& lantern_normal,
-                                          const WaterBounce& bounce) const {
+                                          const WaterBounce& bounce,
+                                          const glm::vec3& sky_seen) const {
   if (lantern.hit)
     return applyFog(shadeLanternHit(ray.origin, ray.dir, lantern, lantern_normal), lantern.t);
-  if (water.hit) return applyFog(shadeWater(bounce), water.t);
-  return sky(sky_, ray.dir);
+  if (water.hit) return applyFog(shadeWater(bounce, sky_seen), water.t);
+  return sky_seen;
 }
 
 }  // namespace sdfreel::lantern_festival

@@ -74,10 +74,15 @@ class LanternFestivalScene : public Scene {
     return water.hit && !lantern.hit;
   }
   WaterBounce bounceOffWater(const Ray& ray, float t, RayStats& stats) const;
-  glm::vec3 shadeWater(const WaterBounce& b) const;
+  // sky_seen: what the ray meets when it hits nothing, the sky (primary rays) or the blurred sky
+  // (the water's reflection): skySeen, or its lanes in radiance_packet.
+  glm::vec3 shadeWater(const WaterBounce& b, const glm::vec3& sky_seen) const;
   glm::vec3 hitMask(const MarchHit& water, const CellHit& lantern) const;
+  glm::vec3 skySeen(const Ray& ray, const MarchHit& water, const CellHit& lantern,
+                    const WaterBounce& bounce) const;
   glm::vec3 shadeHits(const Ray& ray, const MarchHit& water, const CellHit& lantern,
-                      const glm::vec3& lantern_normal, const WaterBounce& bounce) const;
+                      const glm::vec3& lantern_normal, const WaterBounce& bounce,
+                      const glm::vec3& sky_seen) const;
   glm::vec3 applyFog(const glm::vec3& col, float t) const;
   // Normal step at path length t: a pixel footprint, or (naive preset) a world-space constant.
   float normalEps(float t, float pixel_angle) const;

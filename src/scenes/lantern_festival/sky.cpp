@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "sdf/lanes_exp_log.h"
 #include "sdf/noise.h"
 #include "sdf/sdf.h"
 
@@ -41,8 +42,9 @@ glm::vec3 equirect_direction(float u, float v) {
   return glm::vec3(s * dm::cos(phi), dm::cos(theta), s * dm::sin(phi));
 }
 
-float pow15(float x) {
-  const float x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+template <class F>
+F pow15(F x) {
+  const F x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
   return x8 * x4 * x2 * x;
 }
 
@@ -150,33 +152,100 @@ SkyFrame make_sky_frame(const Texture& environment, const Texture& environment_b
   return s;
 }
 
+namespace {
+
+// The disc of the moon, seen at cosine c (> moon_cos_outer) from its centre.
+glm::vec3 moonDisc(const SkyFrame& s, const glm::vec3& dir, float c) {
+  const float disc = dm::smoothstep(s.moon_cos_outer, s.moon_cos_inner, c);
+  // Maria: the paper's blotch map stretched across the disc (one texture period per radius).
+  const glm::vec2 q(glm::dot(dir, s.moon_right), glm::dot(dir, s.moon_up));
+  const float maria = sampleBilinear(*s.moon_noise, q * (MOON_MARIA_SCALE / MOON_RADIUS_RAD)).x;
+  return s.moon_disc * (disc * (1.0f - MOON_MARIA_DEPTH * maria));
+}
+
+// Halo: exp(-k (1 - cos)) ~ a Gaussian in the angle; a tight corona plus a wide glow.
+template <class F>
+F haloStrength(F c) {
+  const F one_minus = 1.0f - c;
+  return MOON_HALO_GAIN * dm::exp(-MOON_HALO_SHARPNESS * one_minus) +
+         MOON_GLOW_GAIN * dm::exp(-MOON_GLOW_SHARPNESS * one_minus);
+}
+
+// The seed's fog band at elevation dir_y; band is dm::mix(1, FOG_MIX_TO, dir_y) with its exact
+// product 1 * (1 - dir_y) written as what it is, which lanes can take too.
+template <class F>
+F fogAmount(F dir_y) {
+  const F band = (1.0f - dir_y) + FOG_MIX_TO * dir_y;
+  return pow15(dm::smoothstep(0.0f, 1.0f, dm::clamp(band, 0.0f, 1.0f)));
+}
+
+// sampleBilinearEquirect's red, green and blue in lanes: each lane the scalar's texel indices
+// (repeat in x, clamp in y) and weights.
+V3x8 sampleEquirect_lanes(const Texture& t, F8 u, F8 v) {
+  const F8 x = u * float(t.width) - 0.5f, y = v * float(t.height) - 0.5f;
+  const F8 x0 = dm::floor(x), y0 = dm::floor(y);
+  const F8 fx = x - x0, fy = y - y0;
+  const auto wrap = [](F8 c, int n) {
+    const F8 fn = splat(float(n));
+    return __builtin_convertvector(c - fn * dm::floor(c / fn), M8);  // wrap_texel
+  };
+  const float last_row = float(t.height - 1);
+  const M8 xa = wrap(x0, t.width), xb = wrap(x0 + 1.0f, t.width);
+  const M8 ya = wrap(dm::clamp(y0, 0.0f, last_row), t.height);
+  const M8 yb = wrap(dm::clamp(y0 + 1.0f, 0.0f, last_row), t.height);
+  F8 rgb[3];
+  for (int c = 0; c < 3; ++c) {
+    if (c >= t.channels) {
+      rgb[c] = splat(0.0f);
+      continue;
+    }
+    const auto fetch = [&](M8 tx, M8 ty) {
+      return gather(t.texels.data(), (ty * t.width + tx) * t.channels + c);
+    };
+    const F8 a = fetch(xa, ya), b = fetch(xb, ya), cc = fetch(xa, yb), d = fetch(xb, yb);
+    const F8 top = a * (1.0f - fx) + b * fx, bottom = cc * (1.0f - fx) + d * fx;
+    rgb[c] = top * (1.0f - fy) + bottom * fy;  // mix4 of mix4s
+  }
+  return V3x8(rgb[0], rgb[1], rgb[2]);
+}
+
+}  // namespace
+
 glm::vec3 moon(const SkyFrame& s, const glm::vec3& dir) {
   const float c = glm::dot(dir, s.moon_dir);
-  // Halo: exp(-k (1 - cos)) ~ a Gaussian in the angle; a tight corona plus a wide glow.
-  const float one_minus = 1.0f - c;
-  glm::vec3 col = s.moon_glow * (MOON_HALO_GAIN * dm::exp(-MOON_HALO_SHARPNESS * one_minus) +
-                                 MOON_GLOW_GAIN * dm::exp(-MOON_GLOW_SHARPNESS * one_minus));
-  if (c > s.moon_cos_outer) {
-    const float disc = dm::smoothstep(s.moon_cos_outer, s.moon_cos_inner, c);
-    // Maria: the paper's blotch map stretched across the disc (one texture period per radius).
-    const glm::vec2 q(glm::dot(dir, s.moon_right), glm::dot(dir, s.moon_up));
-    const float maria = sampleBilinear(*s.moon_noise, q * (MOON_MARIA_SCALE / MOON_RADIUS_RAD)).x;
-    col += s.moon_disc * (disc * (1.0f - MOON_MARIA_DEPTH * maria));
-  }
+  glm::vec3 col = s.moon_glow * haloStrength(c);
+  if (c > s.moon_cos_outer) col += moonDisc(s, dir, c);
   return col;
 }
 
 glm::vec3 skyFrom(const SkyFrame& s, const Texture& environment, glm::vec3 dir) {
   dir = safe_normalize(dir);
-  float fog = dm::clamp(dm::mix(1.0f, FOG_MIX_TO, dir.y), 0.0f, 1.0f);
-  fog = dm::smoothstep(0.0f, 1.0f, fog);
-  fog = pow15(fog);
+  const float fog = fogAmount(dir.y);
   const float thetaa = dm::acos(dir.y);
   const float phii = dm::atan2(dir.z, dir.x);
   const glm::vec4 env =
       sampleBilinearEquirect(environment, glm::vec2(phii / dm::TWO_PI, thetaa / dm::PI));
   const glm::vec3 col = glm::vec3(env) * s.intensity + moon(s, dir);
   return dm::mix(col, s.fog_color, fog * s.horizon_fog);
+}
+
+V3x8 skyFrom_lanes(const SkyFrame& s, const Texture& environment, const V3x8& dir_in, M8 m) {
+  const V3x8 up(glm::vec3(0.0f, 1.0f, 0.0f));
+  const F8 len2 = vdot(dir_in, dir_in);  // safe_normalize, lanes off m looking up
+  const M8 unit = m & (len2 > SAFE_NORMALIZE_MIN_LENGTH2);
+  const V3x8 dir = select(unit, dir_in / dm::sqrt(select(unit, len2, splat(1.0f))), up);
+  const F8 fog = fogAmount(dir.y);
+  const F8 thetaa = dm::acos(dir.y), phii = dm::atan2(dir.z, dir.x);
+  const V3x8 env = sampleEquirect_lanes(environment, phii / dm::TWO_PI, thetaa / dm::PI);
+  const F8 c = vdot(dir, s.moon_dir);
+  V3x8 moon_col = s.moon_glow * haloStrength(c);
+  const M8 on_disc = m & (c > s.moon_cos_outer);
+  if (any(on_disc))
+    for (int i = 0; i < LANES; ++i)
+      if (lane(on_disc, i)) moon_col.set_lane(i, moon_col.lane(i) + moonDisc(s, dir.lane(i), c[i]));
+  const V3x8 col = env * s.intensity + moon_col;
+  const F8 a = fog * s.horizon_fog;
+  return col * (1.0f - a) + s.fog_color * a;
 }
 
 }  // namespace sdfreel::lantern_festival

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "scenes/common/texture.h"
+#include "sdf/lanes.h"
 
 namespace sdfreel::lantern_festival {
 
@@ -45,6 +46,8 @@ SkyFrame make_sky_frame(const Texture& environment, const Texture& environment_b
 glm::vec3 moon(const SkyFrame& s, const glm::vec3& dir);
 // The seed's sky(): environment (sharp, or the blurred copy for reflections) + moon, then fog.
 glm::vec3 skyFrom(const SkyFrame& s, const Texture& environment, glm::vec3 dir);
+// skyFrom in lanes: each lane of m gets skyFrom's bits for its direction (the others: anything).
+V3x8 skyFrom_lanes(const SkyFrame& s, const Texture& environment, const V3x8& dir, M8 m);
 inline glm::vec3 sky(const SkyFrame& s, const glm::vec3& dir) {
   return skyFrom(s, *s.environment, dir);
 }
