@@ -45,6 +45,8 @@ struct LanternCell {
   glm::vec3 to_local[3];  // rows of the world -> lantern rotation (yaw, then the wave's tilt)
   float flicker_phase;    // added to the flicker clock so that lanterns do not pulse in unison
 };
+constexpr int CELL_FLOATS = 13;  // a LanternCell is these floats, in this order
+static_assert(sizeof(LanternCell) == CELL_FLOATS * sizeof(float));
 
 inline glm::vec4 blueNoiseAtID(const GridFrame& g, const glm::vec2& id) {
   return texelFetchRepeat(*g.blue_noise, id.x, id.y);
@@ -87,6 +89,21 @@ class CellTable {
     if (x >= 0.0f && z >= 0.0f && x < float(n_) && z < float(n_))
       return cells_[size_t(z) * n_ + size_t(x)];
     return lanternCellAt(g, lake, id);
+  }
+  // In lanes: each lane's index into the window (-1 outside it, where at() computes the cell).
+  M8 index(const V2x8& id) const {
+    const F8 x = id.x - x0_, z = id.y - z0_;
+    const M8 inside = (x >= 0.0f) & (z >= 0.0f) & (x < float(n_)) & (z < float(n_));
+    const M8 xi = __builtin_convertvector(select(inside, x, splat(0.0f)), M8);
+    const M8 zi = __builtin_convertvector(select(inside, z, splat(0.0f)), M8);
+    return select(inside, zi * n_ + xi, M8{} - 1);
+  }
+  const LanternCell& cell(int index) const { return cells_[size_t(index)]; }
+  // The cells' floats, CELL_FLOATS a cell in LanternCell's order, for gathers.
+  // (A gather reads every lane: an empty table reads a cell of zeros.)
+  const float* floats() const {
+    static const LanternCell none{};
+    return cells_.empty() ? &none.center.x : &cells_[0].center.x;
   }
 
  private:

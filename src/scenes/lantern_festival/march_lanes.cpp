@@ -208,6 +208,11 @@ CellHitLanes marchCells_lanes(const LanternField& f, const V3x8& o, const V3x8& 
   M8 budget = M8{} + lim.max_steps, visits = M8{};
   const M8 relax = splat_mask(lim.step_factor > 1.0f);
   // Per lane: the cell being visited, where the ray leaves it, and the sphere trace inside it.
+  // A cell is its index in the frame's table, read by gathers; one outside the table's window
+  // (index -1) is computed into out.cell.
+  const float* table = f.table.floats();
+  M8 cell_index = M8{} - 1;
+  V3x8 centre(glm::vec3(0.0f));
   LanternCellLanes cell_lanes{};
   F8 tx{}, tz{};
   M8 tracing = splat_mask(false);
@@ -236,21 +241,36 @@ CellHitLanes marchCells_lanes(const LanternField& f, const V3x8& o, const V3x8& 
                   select(need, splat(NO_LIMIT), tz));
       // Most cells are skipped by their bound: only the centres go to lanes here, the rotations
       // when a lane enters the cell.
-      alignas(32) float cx[LANES], cy[LANES], cz[LANES];
-      for (int i = 0; i < LANES; ++i) {
-        if (need[i]) out.cell[i] = f.cell(glm::vec2(id.x[i], id.y[i]));
-        cx[i] = out.cell[i].center.x;
-        cy[i] = out.cell[i].center.y;
-        cz[i] = out.cell[i].center.z;
-      }
-      const V3x8 centre(load8(cx), load8(cy), load8(cz));
+      cell_index = select(need, f.table.index(id), cell_index);
+      const M8 in_table = need & (cell_index >= 0), computed = need & ~in_table;
+      const M8 at = select(in_table, cell_index * CELL_FLOATS, M8{});
+      centre = select(
+          in_table, V3x8(gather(table, at), gather(table, at + 1), gather(table, at + 2)), centre);
+      if (any(computed))
+        for (int i = 0; i < LANES; ++i)
+          if (computed[i]) {
+            out.cell[i] = f.cell(glm::vec2(id.x[i], id.y[i]));
+            centre.set_lane(i, out.cell[i].center);
+          }
       F8 a, bb;
       const M8 in_bound = boundInterval_lanes(g, centre, o, dir, a, bb);
       a = dm::max(a, t0);
       bb = dm::min(bb, t1);
       const M8 enter = need & in_bound & (a <= bb);
-      for (int i = 0; i < LANES; ++i)
-        if (enter[i]) cell_lanes.set_lane(i, out.cell[i]);
+      const M8 enter_table = enter & (cell_index >= 0);
+      if (any(enter_table)) {
+        const M8 row = select(enter_table, cell_index * CELL_FLOATS + 3, M8{});
+        cell_lanes.center = select(enter_table, centre, cell_lanes.center);
+        for (int r = 0; r < 3; ++r)
+          cell_lanes.to_local[r] =
+              select(enter_table,
+                     V3x8(gather(table, row + 3 * r), gather(table, row + 3 * r + 1),
+                          gather(table, row + 3 * r + 2)),
+                     cell_lanes.to_local[r]);
+      }
+      if (any(enter & ~enter_table))
+        for (int i = 0; i < LANES; ++i)
+          if (enter[i] && cell_index[i] < 0) cell_lanes.set_lane(i, out.cell[i]);
       tracing |= enter;
       s.t = select(enter, a, s.t);
       s.t_prev = select(enter, a, s.t_prev);
@@ -280,6 +300,8 @@ CellHitLanes marchCells_lanes(const LanternField& f, const V3x8& o, const V3x8& 
     live &= ~capped;
     next_cell(ended & ~capped);
   }
+  for (int i = 0; i < LANES; ++i)
+    if (lane(out.hit, i) && cell_index[i] >= 0) out.cell[i] = f.table.cell(cell_index[i]);
   return out;
 }
 
