@@ -188,6 +188,7 @@ std::unique_ptr<Backend> make_backend(const std::string& name, int threads, GlCh
   if (name == "cpu") return std::make_unique<CpuBackend>(threads);
   if (name == "gl" || name == "egl" || name == "osmesa") {
     if (name != "gl") gl.platform = name;
+    gl.threads = threads;
 #ifdef SDFREEL_HAVE_GL
     // llvmpipe reads its thread count when the first context is created; an explicit
     // LP_NUM_THREADS in the environment wins over --threads.

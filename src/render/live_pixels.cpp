@@ -1,10 +1,15 @@
 #include "render/live_pixels.h"
 
 #include <algorithm>
+#include <atomic>
+
+#include "render/tiling.h"
 
 namespace sdfreel {
 
 namespace {
+
+constexpr size_t ROWS_A_TASK = 16;
 
 glm::vec3 rgb(const float* p) {
   return glm::vec3(p[0], p[1], p[2]);
@@ -12,10 +17,11 @@ glm::vec3 rgb(const float* p) {
 
 }  // namespace
 
-LivePixels::LivePixels(const AdaptiveSampling& a, int width, int height)
+LivePixels::LivePixels(const AdaptiveSampling& a, int width, int height, int threads)
     : a_(a),
       width_(width),
       height_(height),
+      threads_(threads),
       next_end_(first_round_samples(a)),
       live_(size_t(width) * height, 1),
       taken_(size_t(width) * height, uint16_t(a.maximum)),
@@ -37,25 +43,32 @@ float LivePixels::contrast(int x, int y) const {
 int LivePixels::decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd) {
   next_end_ = next_round_end(a_, taken);
   const float inv_taken = 1.0f / float(taken);
-  for (size_t i = 0; i < live_.size(); ++i)
-    if (live_[i]) display_[i] = display_value(rgb(&sum.pixels[i * 4]) * inv_taken);
+  const size_t width = size_t(width_);
+  for_each_range(size_t(height_), ROWS_A_TASK, threads_, [&](size_t y0, size_t y1) {
+    for (size_t i = y0 * width; i < y1 * width; ++i)
+      if (live_[i]) display_[i] = display_value(rgb(&sum.pixels[i * 4]) * inv_taken);
+  });
   // Decisions read only the display values of finished rounds, never which pixels stopped in
-  // this pass.
-  int live = 0;
-  for (int y = 0; y < height_; ++y)
-    for (int x = 0; x < width_; ++x) {
-      const size_t i = size_t(y) * width_ + x;
-      if (!live_[i]) continue;
-      const float error =
-          std::max(own_error(taken, rgb(&sum.pixels[i * 4]), rgb(&sum_odd.pixels[i * 4])),
-                   edge_error(taken, contrast(x, y)));
-      if (needs_more_samples(a_, taken, error)) {
-        ++live;
-      } else {
-        live_[i] = 0;
-        taken_[i] = uint16_t(taken);
+  // this pass: the rows decide on their own.
+  std::atomic<int> live{0};
+  for_each_range(size_t(height_), ROWS_A_TASK, threads_, [&](size_t y0, size_t y1) {
+    int live_here = 0;
+    for (int y = int(y0); y < int(y1); ++y)
+      for (int x = 0; x < width_; ++x) {
+        const size_t i = size_t(y) * width + x;
+        if (!live_[i]) continue;
+        const float error =
+            std::max(own_error(taken, rgb(&sum.pixels[i * 4]), rgb(&sum_odd.pixels[i * 4])),
+                     edge_error(taken, contrast(x, y)));
+        if (needs_more_samples(a_, taken, error)) {
+          ++live_here;
+        } else {
+          live_[i] = 0;
+          taken_[i] = uint16_t(taken);
+        }
       }
-    }
+    live += live_here;
+  });
   return live;
 }
 

@@ -16,7 +16,9 @@ using SampleCounts = std::vector<uint16_t>;
 
 class LivePixels {
  public:
-  LivePixels(const AdaptiveSampling& a, int width, int height);
+  // threads: how many decide() may use (render/tiling.h; 0: automatic); rows decide on their own,
+  // so the result never depends on it.
+  LivePixels(const AdaptiveSampling& a, int width, int height, int threads);
   // The sample count at which the current round ends.
   int round_end() const { return next_end_; }
   // True when a round ends after sample `taken` (a count), so decide() is due.
@@ -33,7 +35,7 @@ class LivePixels {
   float contrast(int x, int y) const;
 
   AdaptiveSampling a_;
-  int width_, height_, next_end_;
+  int width_, height_, threads_, next_end_;
   std::vector<uint8_t> live_;
   SampleCounts taken_;              // `maximum` until the pixel stops
   std::vector<glm::vec3> display_;  // each pixel's mean at its last round, display values

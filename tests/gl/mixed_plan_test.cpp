@@ -19,7 +19,7 @@ using test::GlTest;
 TEST_F(GlTest, MixedPlanCpuAgreesWithGlByFilamentsRule) {
   const FrameContext ctx = test::mixed_context(160, 90, 4);
   const FramePlan plan = test::mixed_plan(ctx);
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   RayStats gl_stats, cpu_stats, cpu2_stats;
   const ImageRGBA gl = runner.run(plan, ctx, {}, gl_stats);
   const ImageRGBA cpu = run_plan_cpu(plan, ctx, CpuRunSettings{1, 16, true}, cpu_stats);
@@ -38,7 +38,7 @@ TEST_F(GlTest, RayPassWithDepthIsBitIdentical) {
   const FrameContext ctx = test::mixed_context(64, 36, 2);
   FramePlan plan = test::mixed_plan(ctx);
   plan.passes.erase(plan.passes.begin());  // the sphere alone, depth written over the cleared 1
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   RayStats stats;
   const ImageRGBA gl = runner.run(plan, ctx, {}, stats);
   const ImageRGBA cpu = run_plan_cpu(plan, ctx, {}, stats);
@@ -56,7 +56,7 @@ TEST_F(GlTest, AdaptiveRayPassWithDepthIsBitIdentical) {
   finish_frame_context(ctx);
   FramePlan plan = test::mixed_plan(ctx);
   plan.passes.erase(plan.passes.begin());
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   RayStats stats;
   SampleCounts gl_counts, cpu_counts;
   const ImageRGBA gl = runner.run(plan, ctx, {}, stats, &gl_counts);

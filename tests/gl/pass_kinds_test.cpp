@@ -84,7 +84,7 @@ TEST_P(PassKinds, TimesPerPassAndKindAndTheFramesAgree) {
   for (const ShaderTexture& t : scene->shader_textures())
     textures.push_back({t.name, driver.upload_texture(t)});
   const GlSceneInputs inputs{info.shader, scene->shader_uniforms(), textures};
-  GlPlanRunner runner(driver);
+  GlPlanRunner runner(driver, 1);
   RayStats stats;
   const size_t n = plan.passes.size();
   std::vector<double> cpu(n + 1, 0.0), gl(n + 1, 0.0);  // [k]: the first k passes

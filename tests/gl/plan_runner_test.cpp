@@ -23,7 +23,7 @@ FramePlan rays_plan(const CrepuscularRays& rays, bool pattern, float c) {
 }
 
 TEST_F(GlTest, CrepuscularRaysGiveTheCpuBitsAndTheClosedForm) {
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   CrepuscularRays rays;
   rays.light_uv = glm::vec2(0.7f, 0.35f);
   const FrameContext ctx = test::plan_context(40, 22);
@@ -79,7 +79,7 @@ TEST_F(GlTest, MeshDepthMatchesRayDepthAndLaterPassesSampleIt) {
   copy.output = "depth_as_colour";
   copy.shader = "depth_copy.glsl";
   plan.passes = {mesh, copy};
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   RayStats stats;
   const ImageRGBA colour = runner.run(plan, ctx, {}, stats);
   EXPECT_EQ(colour.at(5, 5)[0], 0.25f);

@@ -82,7 +82,7 @@ TEST_F(GlTest, MuseumSunShadowMapIsTheSameMapOnBothBackends) {
   ctx.pose = info.default_camera;
   ctx.params = ParamValues(&info.params);
   finish_frame_context(ctx);
-  GlPlanRunner runner(*driver);
+  GlPlanRunner runner(*driver, 1);
   RayStats stats;
   const museum::SunView& sun = museum::sun_view();
   const float texel_depth = sun.texel * sun.inv_depth_range;

@@ -112,7 +112,7 @@ ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
     evals->assign(size_t(f.width) * f.height, 0.0f);
     if (!pass.sdf_evals.empty()) sums.evals = evals->data();
   }
-  LivePixels live(a, f.width, f.height);
+  LivePixels live(a, f.width, f.height, pc.threads);
   const std::vector<int> order = pixels_by_tile(f.width, f.height, pc.tile_size);
   for (int from = 0;;) {
     const int to = live.round_end();

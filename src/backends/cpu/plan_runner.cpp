@@ -83,7 +83,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
   if (!evals_are_read(plan, evals)) targets.skip_per_sample_clear(SDF_EVALS_TARGET);
   for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
   ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
-  LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
+  LivePixels live(sampling_of(ctx), ctx.width, ctx.height, s.threads);
   std::vector<MeshPassCache> caches(plan.passes.size());  // one per pass, for the frame
   if (evals) evals->assign(size_t(ctx.width) * ctx.height, 0.0f);
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {

@@ -21,7 +21,8 @@ std::string mesa_version(const std::string& gl_version) {
 
 }  // namespace
 
-GlBackend::GlBackend(const GlChoice& choice) : platform_(make_gl_platform(choice)) {
+GlBackend::GlBackend(const GlChoice& choice)
+    : platform_(make_gl_platform(choice)), threads_(choice.threads) {
   driver_ = std::make_unique<GlDriver>(*platform_, find_shader_dir());
   platform_->release();  // the thread that renders makes it current (EGL: one thread at a time)
 }
@@ -87,7 +88,7 @@ void GlBackend::begin(const SceneInfo& scene) {
   textures_.clear();
   textures_key_ = 0;
   platform_->make_current();
-  runner_ = std::make_unique<GlPlanRunner>(*driver_);
+  runner_ = std::make_unique<GlPlanRunner>(*driver_, threads_);
   runner_->program("common/fullscreen.vert", scene.shader);  // compile errors before any frame
   // llvmpipe compiles the shader to machine code at its first draw, which takes seconds for a
   // large scene: draw one pixel now, so that frame times (manifest, bench) measure rendering.

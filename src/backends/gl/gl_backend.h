@@ -36,6 +36,7 @@ class GlBackend : public Backend {
  private:
   void begin_shader(const SceneInfo& scene);
   std::unique_ptr<GlPlatform> platform_;
+  int threads_;                                 // GlChoice::threads
   std::unique_ptr<GlDriver> driver_;            // destroyed before the platform (needs its context)
   std::unique_ptr<GlPlanRunner> runner_;        // destroyed before the driver
   std::unique_ptr<ShadertoyRunner> shadertoy_;  // a user's shader, instead of scene_

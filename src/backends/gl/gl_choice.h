@@ -12,6 +12,7 @@ namespace sdfreel {
 struct GlChoice {
   std::string platform;  // egl | osmesa | auto
   std::string device;    // software | gpu | N
+  int threads = 0;       // CPU threads of sdfreel's own work between draws (0: automatic)
 };
 
 }  // namespace sdfreel

@@ -186,7 +186,7 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
   const CameraModel cam =
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
   for (const char* sum : {SUM_COLOUR, SUM_EVALS, SUM_ODD}) targets_.clear(sum);
-  LivePixels live(sampling_of(ctx), ctx.width, ctx.height);
+  LivePixels live(sampling_of(ctx), ctx.width, ctx.height, threads_);
   if (!live_mask_full_ || live_mask_size_ != glm::ivec2(ctx.width, ctx.height)) {
     upload_live_mask(live.mask(), ctx.width, ctx.height);
     live_mask_full_ = true;

@@ -37,7 +37,9 @@ struct GlSceneInputs {
 
 class GlPlanRunner {
  public:
-  explicit GlPlanRunner(GlDriver& driver) : driver_(driver), targets_(driver.gl()) {}
+  // threads: for the CPU work between draws (adaptive sampling's decisions).
+  GlPlanRunner(GlDriver& driver, int threads)
+      : driver_(driver), targets_(driver.gl()), threads_(threads) {}
   // `counts` and `evals` as run_plan_cpu's (backends/cpu/plan_runner.h).
   ImageRGBA run(const FramePlan& plan, const FrameContext& ctx, const GlSceneInputs& scene,
                 RayStats& stats, SampleCounts* counts = nullptr,
@@ -55,6 +57,7 @@ class GlPlanRunner {
 
   GlDriver& driver_;
   GlTargets targets_;
+  int threads_;
   std::map<std::string, GlProgramId> programs_;                     // by "vertex|fragment"
   std::map<std::shared_ptr<const TriangleMesh>, GlMeshId> meshes_;  // owns: pointers stay unique
   GLuint live_mask_ = 0;
