@@ -28,6 +28,11 @@ void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn
   });
 }
 
+void with_threads(int threads, const std::function<void()>& fn) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute(fn);
+}
+
 void for_each_range(size_t n, size_t chunk, int threads,
                     const std::function<void(size_t begin, size_t end)>& fn) {
   for_each_index((n + chunk - 1) / chunk, threads,

@@ -20,6 +20,10 @@ void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn
 void for_each_range(size_t n, size_t chunk, int threads,
                     const std::function<void(size_t begin, size_t end)>& fn);
 
+// Runs fn with `threads` threads for the parallel loops inside it (tbb::parallel_for's included),
+// as the loops above: a scene's prepare() that builds its tables in parallel keeps to --threads.
+void with_threads(int threads, const std::function<void()>& fn);
+
 int tile_count(int width, int height, int tile_size);
 void for_each_tile(int width, int height, int tile_size, int threads,
                    const std::function<void(const Tile&)>& fn);

@@ -1,6 +1,8 @@
 #include "render/tiling.h"
 
 #include <gtest/gtest.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <vector>
@@ -41,6 +43,18 @@ TEST(SamplePattern, OneSampleIsThePixelCentreAndManyAreDistinctInTheUnitSquare) 
   EXPECT_NEAR(mean.x, 0.5f, 0.04f);
   EXPECT_NEAR(mean.y, 0.5f, 0.04f);
   EXPECT_EQ(sample_offsets(16), s);  // fixed
+}
+
+// with_threads bounds the parallel loops inside it, a scene's own tbb::parallel_for included.
+TEST(Tiling, WithThreadsBoundsTheLoopsInside) {
+  for (int threads : {1, 2, 3}) {
+    int seen = 0;
+    with_threads(threads, [&] { seen = tbb::this_task_arena::max_concurrency(); });
+    EXPECT_EQ(seen, threads);
+  }
+  int all = 0;
+  with_threads(0, [&] { all = tbb::this_task_arena::max_concurrency(); });
+  EXPECT_EQ(all, tbb::info::default_concurrency());
 }
 
 }  // namespace

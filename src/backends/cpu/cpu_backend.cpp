@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backends/cpu/plan_runner.h"
+#include "render/tiling.h"
 
 namespace sdfreel {
 
@@ -29,7 +30,7 @@ void CpuBackend::begin(const SceneInfo& scene) {
 }
 
 ImageRGBA CpuBackend::render(const FrameContext& ctx, RayStats& stats) {
-  scene_->prepare(ctx);
+  with_threads(threads_, [&] { scene_->prepare(ctx); });
   return run_plan_cpu(scene_->frame_plan(ctx), ctx, CpuRunSettings{threads_, tile_size_, packets_},
                       stats, &counts_, record_evals_ ? &evals_ : nullptr);
 }

@@ -4,6 +4,7 @@
 
 #include "backends/gl/frame_uniforms.h"
 #include "backends/gl/shader_dir.h"
+#include "render/tiling.h"
 #include "shader/shader_hash.h"
 
 namespace sdfreel {
@@ -111,7 +112,7 @@ ImageRGBA GlBackend::render(const FrameContext& ctx, RayStats& stats) {
   }
   if (!scene_) throw std::logic_error("GlBackend::render before begin");
   platform_->make_current();
-  scene_->prepare(ctx);
+  with_threads(threads_, [&] { scene_->prepare(ctx); });
   GlSceneInputs inputs{scene_shader_, scene_->shader_uniforms(), {}};
   // Upload the textures when their content changes, not every frame (27 MB for the lanterns).
   const uint64_t key = scene_->shader_textures_key();

@@ -1,5 +1,7 @@
 #include "scenes/lantern_festival/grid.h"
 
+#include <tbb/parallel_for.h>
+
 namespace sdfreel::lantern_festival {
 
 namespace {
@@ -63,10 +65,13 @@ void CellTable::build(const GridFrame& g, const LakeFrame& lake, const glm::vec2
   x0_ = centre_id.x - float(radius);
   z0_ = centre_id.y - float(radius);
   cells_.resize(size_t(n_) * n_);
-  for (int z = 0; z < n_; ++z)
+  // Rows on the threads of the render (prepare() runs under its thread count): each cell is a
+  // pure function of its id.
+  tbb::parallel_for(0, n_, [&](int z) {
     for (int x = 0; x < n_; ++x)
       cells_[size_t(z) * n_ + x] =
           lanternCellAt(g, lake, glm::vec2(x0_ + float(x), z0_ + float(z)));
+  });
 }
 
 NearestLantern nearestLantern(const LanternField& f, const glm::vec3& p3) {
