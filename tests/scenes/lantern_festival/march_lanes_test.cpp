@@ -1,11 +1,15 @@
-// The reference and naive marches in eight lanes (march_lanes, marchNaive_lanes) give, lane by
-// lane, the scalar marches' hits, bits and RayStats: random rays over the lanterns, rays straight
-// down the lanterns' axes, level rays (the slab clip's flat branch), over-relaxed and plain steps,
-// and a small step budget (the capped count), with lanes switched off.
+// The reference and naive marches and the cell walk in eight lanes (march_lanes, marchNaive_lanes,
+// marchCells_lanes) give, lane by lane, the scalar marches' hits, bits and RayStats: random rays
+// over the lanterns, rays straight down the lanterns' axes, level rays (the slab clip's flat
+// branch), over-relaxed and plain steps, and a small step budget (the capped count), with lanes
+// switched off; the cell walk also with a cell table too small for the rays, whose cells outside it
+// are computed on demand.
 #include "scenes/lantern_festival/march_lanes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -94,6 +98,47 @@ TEST_F(LanternFestivalMarchLanes, ReferenceMarchGivesScalarBitsAndStats) {
     }
   EXPECT_EQ(mismatches, 0);
   EXPECT_GT(hits, 100);  // the rays do meet lanterns, and some run out of steps
+  EXPECT_GT(capped, 0);
+}
+
+TEST_F(LanternFestivalMarchLanes, CellWalkGivesScalarBitsAndStatsInAndOutsideTheTable) {
+  LanternField small = scene_.field();
+  small.table.build(small.grid, small.lake, glm::vec2(0.0f), 1);  // 3 x 3 cells; rays span 7 x 7
+  const std::vector<RayLanes> rays = random_rays(small.grid.size, 96);
+  int mismatches = 0, hits = 0, hits_off_table = 0, capped = 0;
+  const LanternField* whole = &scene_.field();
+  for (const LanternField* f : {whole, static_cast<const LanternField*>(&small)})
+    for (int max_steps : {256, 12}) {
+      const MarchLimits lim{max_steps, 0.25f, 1.2f, 1e-3f, 0.0f};
+      for (const RayLanes& r : rays) {
+        const F8 t_max = splat(60.0f);
+        RayStats lanes, scalar;
+        const CellHitLanes h =
+            marchCells_lanes(*f, r.o, r.dir, splat(0.0f), t_max, lim, r.t_offset, r.active, lanes);
+        for (int i = 0; i < LANES; ++i) {
+          if (!lane(r.active, i)) continue;
+          MarchLimits li = lim;
+          li.t_offset = r.t_offset[i];
+          const CellHit want =
+              marchCells(*f, r.o.lane(i), r.dir.lane(i), 0.0f, t_max[i], li, scalar);
+          hits += want.hit;
+          const glm::vec3 c = want.cell.center;
+          if (f == &small && want.hit &&
+              std::max(std::abs(c.x), std::abs(c.z)) > 1.5f * f->grid.size)
+            ++hits_off_table;
+          const bool same =
+              want.hit == lane(h.hit, i) &&
+              (!want.hit || (same_bits(want.t, h.t[i]) &&
+                             std::memcmp(&want.cell, &h.cell[i], sizeof want.cell) == 0));
+          mismatches += !same;
+        }
+        capped += int(scalar.capped);
+        EXPECT_TRUE(same_stats(lanes, scalar)) << "max_steps " << max_steps;
+      }
+    }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(hits_off_table, 20);  // lanterns whose cells the small table does not hold
   EXPECT_GT(capped, 0);
 }
 
