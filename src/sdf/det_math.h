@@ -206,9 +206,10 @@ inline float atan2(float y, float x) {
   return y < 0.0f ? -a : a;
 }
 
-// asin(s) for s in [0, 0.5].
-inline float asin_kernel(float s) {
-  const float z = s * s;
+// asin(s) for s in [0, 0.5]; a template so that lanes (sdf/lanes.h's F8) run the same operations.
+template <class F>
+inline F asin_kernel(F s) {
+  const F z = s * s;
   return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
            7.4953002686e-2f) *
               z +

@@ -89,16 +89,6 @@ inline F8 atan2(F8 y, F8 x) {
   return select(hi == 0.0f, splat(0.0f), a);
 }
 
-inline F8 asin_kernel(F8 s) {
-  const F8 z = s * s;
-  return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
-           7.4953002686e-2f) *
-              z +
-          1.6666752422e-1f) *
-             z * s +
-         s;
-}
-
 inline F8 acos(F8 x) {
   x = clamp(x, -1.0f, 1.0f);
   const F8 below = PI - 2.0f * asin_kernel(sqrt(0.5f * (1.0f + x)));

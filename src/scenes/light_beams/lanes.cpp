@@ -41,22 +41,13 @@ P8 select8(M8 m, P8 a, P8 b) {
   return {select(m, a.x, b.x), select(m, a.y, b.y)};
 }
 
-// ---- det_math's asin, lane by lane (atan2: sdf/lanes_exp_log.h) ----
-F8 asin_kernel8(F8 s) {
-  const F8 z = s * s;
-  return ((((4.2163199048e-2f * z + 2.4181311049e-2f) * z + 4.5470025998e-2f) * z +
-           7.4953002686e-2f) *
-              z +
-          1.6666752422e-1f) *
-             z * s +
-         s;
-}
-
+// ---- det_math's asin, lane by lane (its kernel is det_math's template; atan2, acos:
+// sdf/lanes_exp_log.h) ----
 F8 asin8(F8 x) {
   x = dm::clamp(x, -1.0f, 1.0f);
   const F8 a = dm::abs(x);
-  const F8 r = select(a > 0.5f, dm::HALF_PI - 2.0f * asin_kernel8(dm::sqrt(0.5f * (1.0f - a))),
-                      asin_kernel8(a));
+  const F8 r = select(a > 0.5f, dm::HALF_PI - 2.0f * dm::asin_kernel(dm::sqrt(0.5f * (1.0f - a))),
+                      dm::asin_kernel(a));
   return select(x < 0.0f, -r, r);
 }
 
