@@ -30,7 +30,8 @@ class Scene {
  public:
   virtual ~Scene() = default;
   // Called once per frame before any ray: cache per-frame constants (wrapped phases, parameter
-  // reads, per-cell data). Must be deterministic and depend only on ctx.
+  // reads, per-cell data). Must be deterministic and depend only on ctx. Backends call it under the
+  // render's thread count (render/tiling.h with_threads), so its parallel loops keep to --threads.
   virtual void prepare(const FrameContext& ctx) = 0;
   // Linear scene-referred radiance (Rec.709 primaries) along one primary ray. Thread-safe (const).
   virtual glm::vec3 radiance(const Ray& ray, RayStats& stats) const = 0;
