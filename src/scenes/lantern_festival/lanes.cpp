@@ -91,23 +91,27 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
     return;
   }
 
+  // skySeen in lanes: the sky where the ray hits nothing; below, the blurred sky where the
+  // water's reflection hits no lantern.
+  const M8 on_sky = valid & ~water.hit & ~lantern.hit;
+  V3x8 sky_seen(glm::vec3(0.0f));
+  if (any(on_sky)) sky_seen = skyFrom_lanes(sky_, *sky_.environment, rays.dir, on_sky);
   // bounceOffWater in lanes.
   const M8 bounce = valid & water.hit & ~lantern.hit;
   WaterBounce bounces[LANES];
-  M8 bounce_hits = splat_mask(false);
-  V3x8 reflected(glm::vec3(0.0f));
   if (any(bounce)) {
     const V3x8 p = rays.origin + rays.dir * water.t;
     const V3x8 normal =
         waterNormal_lanes(field_.lake, p, normalEps_lanes(march_, water.t, rays.pixel_angle));
     const V3x8 r = rays.dir - normal * (2.0f * vdot(normal, rays.dir));
-    reflected = r;
     const MarchLimits lim_r = limits(march_.reflect_steps, rays.pixel_angle, 0.0f);
     const CellHitLanes h =
         marchLanterns_lanes(field_, march_, reference_march_, p, r, splat(march_.max_dist), lim_r,
                             water.t, bounce, stats);
-    const M8 reflects_lantern = bounce & h.hit;
-    bounce_hits = reflects_lantern;
+    const M8 reflects_lantern = bounce & h.hit, reflects_sky = bounce & ~h.hit;
+    if (any(reflects_sky))
+      sky_seen = select(reflects_sky,
+                        skyFrom_lanes(sky_, *sky_.environment_blurred, r, reflects_sky), sky_seen);
     V3x8 hit_normal(glm::vec3(0.0f));
     if (any(reflects_lantern))
       hit_normal = lanternNormal_lanes(field_.grid, h.cell, reflects_lantern, p + r * h.t,
@@ -116,16 +120,6 @@ void LanternFestivalScene::radiance_packet(const RayPacket& rays, glm::vec3* out
       bounces[i] = WaterBounce{p.lane(i), r.lane(i), CellHit{lane(h.hit, i), h.t[i], h.cell[i]},
                                hit_normal.lane(i)};
   }
-  // skySeen in lanes: the sky where the ray hits nothing, the blurred sky where the water's
-  // reflection hits no lantern.
-  const M8 on_sky = valid & ~water.hit & ~lantern.hit;
-  const M8 reflects_sky = bounce & ~bounce_hits;
-  V3x8 sky_seen(glm::vec3(0.0f));
-  if (any(on_sky)) sky_seen = skyFrom_lanes(sky_, *sky_.environment, rays.dir, on_sky);
-  if (any(reflects_sky))
-    sky_seen =
-        select(reflects_sky,
-               skyFrom_lanes(sky_, *sky_.environment_blurred, reflected, reflects_sky), sky_seen);
   for (int i = 0; i < rays.count; ++i)
     out[i] = shadeHits(rays.ray(i), water_hit(i), lantern_hit(i), normal_lanes.lane(i), bounces[i],
                        sky_seen.lane(i));
