@@ -12,13 +12,17 @@ int tile_count(int width, int height, int tile_size) {
   return ((width + tile_size - 1) / tile_size) * ((height + tile_size - 1) / tile_size);
 }
 
+void with_threads(int threads, const std::function<void()>& fn) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute(fn);
+}
+
 void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn) {
   if (threads == 1 || n < 2) {  // no arena for a single item
     for (size_t i = 0; i < n; ++i) fn(i);
     return;
   }
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  with_threads(threads, [&] {
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, n, 1),
         [&](const tbb::blocked_range<size_t>& r) {
@@ -26,11 +30,6 @@ void for_each_index(size_t n, int threads, const std::function<void(size_t)>& fn
         },
         tbb::simple_partitioner());
   });
-}
-
-void with_threads(int threads, const std::function<void()>& fn) {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute(fn);
 }
 
 void for_each_range(size_t n, size_t chunk, int threads,
