@@ -1,9 +1,10 @@
 #pragma once
-// exp, log, pow, atan2, acos of det_math.h on eight lanes: each lane performs the scalar function's
-// operations in its order, both sides of every branch computed and one selected, so a lane has
-// the scalar's bits for every input, NaN, infinities and denormals included
+// exp, log, pow, atan2, asin, acos of det_math.h on eight lanes: each lane performs the scalar
+// function's operations in its order, both sides of every branch computed and one selected, so a
+// lane has the scalar's bits for every input, NaN, infinities and denormals included
 // (tests/sdf/lanes_exp_log_test.cpp). The display transform runs on them (io/aces_sdr_video.cpp),
-// water_lily's and light_beams' lanes use atan2, lantern_festival's sky atan2 and acos.
+// water_lily's lanes use atan2, light_beams' atan2 and asin, lantern_festival's sky atan2 and
+// acos.
 #include <cfloat>
 #include <cstdint>
 
@@ -87,6 +88,14 @@ inline F8 atan2(F8 y, F8 x) {
   a = select(x < 0.0f, PI - a, a);
   a = select(y < 0.0f, -a, a);
   return select(hi == 0.0f, splat(0.0f), a);
+}
+
+inline F8 asin(F8 x) {
+  x = clamp(x, -1.0f, 1.0f);
+  const F8 a = abs(x);
+  const F8 r =
+      select(a > 0.5f, HALF_PI - 2.0f * asin_kernel(sqrt(0.5f * (1.0f - a))), asin_kernel(a));
+  return select(x < 0.0f, -r, r);
 }
 
 inline F8 acos(F8 x) {

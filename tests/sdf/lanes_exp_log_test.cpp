@@ -1,6 +1,6 @@
-// exp, log, pow, atan2 and acos on lanes (sdf/lanes_exp_log.h) give, in every lane, the bits of the
-// scalar functions of det_math.h: wide sweeps, every power of two, and the awkward inputs (zeros
-// of both signs, denormals, the largest floats, infinities, NaN).
+// exp, log, pow, atan2, asin and acos on lanes (sdf/lanes_exp_log.h) give, in every lane, the bits
+// of the scalar functions of det_math.h: wide sweeps, every power of two, and the awkward inputs
+// (zeros of both signs, denormals, the largest floats, infinities, NaN).
 #include "sdf/lanes_exp_log.h"
 
 #include <gtest/gtest.h>
@@ -81,10 +81,11 @@ TEST(LanesExpLog, Atan2MatchesScalarBitsInEveryQuadrant) {
   for (int k = 0; k < LANES; ++k) EXPECT_TRUE(same_bits(r[k], dm::atan2(y[k], x[k]))) << k;
 }
 
-TEST(LanesExpLog, AcosMatchesScalarBitsInsideAndOutsideItsDomain) {
+TEST(LanesExpLog, AsinAndAcosMatchScalarBitsInsideAndOutsideTheirDomain) {
   std::vector<float> xs = awkward();
-  // Every float step round the branch points -1, -0.5, 0.5 and 1, and a sweep of [-1.25, 1.25].
-  for (float edge : {-1.0f, -0.5f, 0.5f, 1.0f}) {
+  // Every float step round the branch points -1, -0.5, 0, 0.5 and 1, and a sweep of
+  // [-1.25, 1.25].
+  for (float edge : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f}) {
     float v = edge;
     for (int i = 0; i < 64; ++i) v = std::nextafter(v, -2.0f);
     for (int i = 0; i < 128; ++i, v = std::nextafter(v, 2.0f)) xs.push_back(v);
@@ -93,6 +94,9 @@ TEST(LanesExpLog, AcosMatchesScalarBitsInsideAndOutsideItsDomain) {
   while (xs.size() % LANES) xs.push_back(0.0f);
   EXPECT_EQ(mismatches(
                 xs, [](F8 v) { return dm::acos(v); }, [](float x) { return dm::acos(x); }),
+            0);
+  EXPECT_EQ(mismatches(
+                xs, [](F8 v) { return dm::asin(v); }, [](float x) { return dm::asin(x); }),
             0);
 }
 

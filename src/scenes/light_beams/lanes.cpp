@@ -41,16 +41,6 @@ P8 select8(M8 m, P8 a, P8 b) {
   return {select(m, a.x, b.x), select(m, a.y, b.y)};
 }
 
-// ---- det_math's asin, lane by lane (its kernel is det_math's template; atan2, acos:
-// sdf/lanes_exp_log.h) ----
-F8 asin8(F8 x) {
-  x = dm::clamp(x, -1.0f, 1.0f);
-  const F8 a = dm::abs(x);
-  const F8 r = select(a > 0.5f, dm::HALF_PI - 2.0f * dm::asin_kernel(dm::sqrt(0.5f * (1.0f - a))),
-                      dm::asin_kernel(a));
-  return select(x < 0.0f, -r, r);
-}
-
 F8 smoothstep8(F8 e1, F8 x) {  // dm::smoothstep(0, e1, x)
   const F8 t = dm::clamp((x - 0.0f) / (e1 - 0.0f), 0.0f, 1.0f);
   const F8 s = t * t * (3.0f - 2.0f * t);
@@ -88,7 +78,7 @@ F8 angleFrom8(P8 n, P8 v) {
 P8 discSpan8(P8 p, P8 n, vec2 c, float r) {
   const P8 v = sub(c, p);
   const F8 phi = angleFrom8(n, v);
-  const F8 half = asin8(dm::min(r / length8(v), 1.0f));
+  const F8 half = dm::asin(dm::min(r / length8(v), 1.0f));
   return P8{phi - half, phi + half};
 }
 
@@ -107,7 +97,7 @@ ShapeView8 shapeView8(P8 p, const Shape& s) {
   sv.sdf = shapeSDF8(p, s);
   if (s.type == SHAPE_CIRCLE) {
     sv.v = sub(s.a, p);
-    sv.hi = asin8(dm::min(s.r / length8(sv.v), 1.0f));
+    sv.hi = dm::asin(dm::min(s.r / length8(sv.v), 1.0f));
     sv.lo = -sv.hi;
     return sv;
   }
