@@ -78,6 +78,10 @@ struct RayPass {
   std::vector<ShaderUniform> uniforms;
   std::function<void(const RayPacket&, RayPassOutput&, RayStats&)> packet;
   std::function<void(const Ray&, glm::vec3& colour, float& depth, bool& keep, RayStats&)> scalar;
+  // Optional, for a pass whose every ray gives one colour, kept, counting no SDF evaluation (a
+  // plain background): that colour. The CPU then fills the pass's targets without tracing, when the
+  // pass has no depth (tests/passes/uniform_ray_pass_test.cpp: the same bits as tracing).
+  std::optional<glm::vec3> uniform_colour;
 };
 
 // Instances of a triangle mesh: each draws the mesh with its model matrix; `data` is a free vec4

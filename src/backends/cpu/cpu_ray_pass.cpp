@@ -72,6 +72,16 @@ void tile_packets(const RayPass& pass, const CpuPassContext& pc, const Tile& t,
   }
 }
 
+// What store() does at every pixel of the frame for a pass whose rays all give `colour`, kept,
+// counting no SDF evaluation.
+void fill_uniform(const glm::vec3& colour, const FrameContext& f, const RayPassTargets& out,
+                  int threads) {
+  for_each_range(size_t(f.height), 16, threads, [&](size_t begin, size_t end) {
+    for (int y = int(begin); y < int(end); ++y)
+      for (int x = 0; x < f.width; ++x) store(out, x, y, colour, 1.0f, true, 0);
+  });
+}
+
 }  // namespace
 
 void run_ray_pass(const RayPass& pass, const CpuPassContext& pc, CpuTargets& targets,
@@ -88,6 +98,8 @@ void run_ray_pass(const RayPass& pass, const CpuPassContext& pc, CpuTargets& tar
     out.write_depth = pass.depth_test != DepthTest::TestOnly;
   }
   const FrameContext& f = pc.frame;
+  if (pass.uniform_colour && !out.depth)
+    return fill_uniform(*pass.uniform_colour, f, out, pc.threads);
   std::vector<RayStats> tile_stats(size_t(tile_count(f.width, f.height, pc.tile_size)));
   for_each_tile(f.width, f.height, pc.tile_size, pc.threads, [&](const Tile& t) {
     if (packets)

@@ -53,7 +53,10 @@ class FurScene : public Scene {
             {"u_surface", 1, {float(params_.surface)}}};
   }
   FramePlan frame_plan(const FrameContext& ctx) const override {
-    FramePlan plan = Scene::frame_plan(ctx);  // the background
+    FramePlan plan = Scene::frame_plan(ctx);  // the background, one colour
+    RayStats none;
+    const Ray any_ray{glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f};
+    std::get<RayPass>(plan.passes[0]).uniform_colour = radiance(any_ray, none);
     // Close enough to the fur to stand in it (the outer shell is 2.5-7 cm from the skin): the
     // default 5 cm near plane would cut the skin away and show the case through the shape.
     plan.near_plane = NEAR_PLANE;
