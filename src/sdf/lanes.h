@@ -91,6 +91,16 @@ inline uint64_t count_lanes(M8 m) {
   return n;
 #endif
 }
+// Bit i set where lane i is: for a loop over the set lanes.
+inline unsigned lane_bits(M8 m) {
+#ifdef __AVX__
+  return unsigned(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
+#else
+  unsigned bits = 0;
+  for (int i = 0; i < LANES; ++i) bits |= m[i] != 0 ? 1u << i : 0u;
+  return bits;
+#endif
+}
 // Lane i of a mask as a bool.
 inline bool lane(M8 m, int i) {
   return m[i] != 0;

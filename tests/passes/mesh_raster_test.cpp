@@ -1,6 +1,7 @@
 // The CPU mesh pass against the plain per-pixel rule (reference_rasteriser.h): on random,
 // degenerate, sliver, huge, near-clipped and pixel-centre triangles, at several tile sizes and
-// thread counts, the same pixels get the same colour (varyings) and depth bits; and a grid of
+// thread counts, shaded one fragment or eight at a time, the same pixels get the same colour
+// (varyings) and depth bits; and a grid of
 // triangles with its vertices on pixel centres covers each pixel exactly once (the top-left rule).
 #include <gtest/gtest.h>
 
@@ -43,6 +44,23 @@ MeshPass test_pass(TriangleMesh mesh, const glm::mat4& projection, CullMode cull
   p.shade = [](const MeshFragment& f) {
     return glm::vec4(f.uv.x + f.instance_data.x, f.uv.y + f.world_position.x,
                      f.world_position.z + f.world_normal.x, f.front_facing ? 1.0f : 0.5f);
+  };
+  return p;
+}
+
+// `pass` shaded eight fragments at a time as well (MeshPass::shade8, the rasteriser's lanes path):
+// the test colour with alpha = u, half of it discarded by the cutoff.
+MeshPass with_lanes(MeshPass p) {
+  p.alpha_cutoff = 0.5f;
+  p.shade = [](const MeshFragment& f) {
+    return glm::vec4(f.uv.x + f.instance_data.x, f.uv.y + f.world_position.x,
+                     f.world_position.z + f.world_normal.x, f.uv.x);
+  };
+  p.shade8 = [](const MeshFragments8& f, FragmentColours8& c) {
+    c.r = f.uv.x + f.instance_data.x;
+    c.g = f.uv.y + f.world_position.x;
+    c.b = f.world_position.z + f.world_normal.x;
+    c.a = f.uv.x;
   };
   return p;
 }
@@ -97,6 +115,7 @@ TEST(MeshRaster, RandomOverlappingTrianglesGiveTheReferenceBits) {
         {glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, -0.05f, 0.2f)), glm::vec4(2.0f)}};
     EXPECT_GT(drawn_pixels(test::reference_mesh_pass(pass, 61, 37)), 500);
     expect_reference_bits(pass, 61, 37);
+    expect_reference_bits(with_lanes(pass), 61, 37);
   }
 }
 
@@ -112,6 +131,7 @@ TEST(MeshRaster, PerspectiveAndNearClippedTrianglesGiveTheReferenceBits) {
   MeshPass pass = test_pass(b.m, projection, CullMode::None);
   EXPECT_GT(drawn_pixels(test::reference_mesh_pass(pass, 48, 27)), 400);
   expect_reference_bits(pass, 48, 27);
+  expect_reference_bits(with_lanes(pass), 48, 27);
   // Enough instances that the pass sets up in several batches (on several threads); without a
   // depth test the last triangle drawn wins, so the batches must be drawn in mesh order.
   pass.depth_test = DepthTest::Off;
@@ -139,12 +159,17 @@ TEST(MeshRaster, DegenerateSliverAndHugeTrianglesGiveTheReferenceBits) {
   const MeshPass pass = test_pass(b.m, glm::mat4(1.0f), CullMode::None);
   EXPECT_GT(drawn_pixels(test::reference_mesh_pass(pass, 40, 23)), 40 * 23 / 2);
   expect_reference_bits(pass, 40, 23);
+  expect_reference_bits(with_lanes(pass), 40, 23);
 }
 
 // Vertices exactly on pixel centres (window (i + 0.5, j + 0.5): dyadic clip coordinates at a
-// 64x32 frame), so edges run through centres horizontally, vertically and diagonally.
-TEST(MeshRaster, GridThroughPixelCentresCoversEachPixelOnceAndGivesTheReferenceBits) {
-  constexpr int W = 64, H = 32, STEP = 3;
+// 64x32 frame), so edges run through centres horizontally, vertically and diagonally; cells of 3
+// pixels and of 12 (rows the rasteriser narrows to the edges' crossings before testing).
+class MeshRasterGrid : public testing::TestWithParam<int> {};
+
+TEST_P(MeshRasterGrid, ThroughPixelCentresCoversEachPixelOnceAndGivesTheReferenceBits) {
+  constexpr int W = 64, H = 32;
+  const int STEP = GetParam();
   MeshBuilder b;
   auto centre = [](int i, int j) {
     return glm::vec3((2.0f * float(i) + 1.0f) / W - 1.0f, (2.0f * float(j) + 1.0f) / H - 1.0f,
@@ -173,7 +198,10 @@ TEST(MeshRaster, GridThroughPixelCentresCoversEachPixelOnceAndGivesTheReferenceB
           << "pixel " << wx << ", window row " << wy;
     }
   expect_reference_bits(pass, W, H);
+  expect_reference_bits(with_lanes(pass), W, H);
 }
+
+INSTANTIATE_TEST_SUITE_P(Cells, MeshRasterGrid, testing::Values(3, 12));
 
 }  // namespace
 }  // namespace sdfreel
