@@ -23,7 +23,7 @@ void CoveredPixels::weigh(const TriangleWeights& t) {
   const int end = (count + LANES - 1) / LANES * LANES;
   for (int i = count; i < end; ++i) {
     for (int k = 0; k < 3; ++k) b[k][i] = b[k][0];
-    x[i] = x[0], y[i] = y[0];
+    at[i] = at[0];
   }
   for (int i = 0; i < end; i += SPAN) {
     const D4 l[3] = {load4(b[0] + i) / t.area, load4(b[1] + i) / t.area, load4(b[2] + i) / t.area};

@@ -3,8 +3,8 @@
 // coverage test runs span by span (edge_span.h) and appends only the covered pixels' edge values,
 // without a branch per pixel; the depth and weight divisions then run on full groups of four
 // instead of on spans (the fur's are a third empty on average), and the per-pixel loops that
-// follow have no coverage branches to mispredict. Each lane performs the scalar operations of one pixel on the
-// same values wherever it is packed: the same bits.
+// follow have no coverage branches to mispredict. Each lane performs the scalar operations of one
+// pixel on the same values wherever it is packed: the same bits.
 #ifdef __AVX2__
 #include <immintrin.h>
 #endif
@@ -44,15 +44,15 @@ struct CoveredPixels {
   static constexpr int SIZE = CAPACITY + LANES;  // room for a last group of eight
   int count = 0;
   alignas(32) double b[3][SIZE];          // edge values
-  alignas(32) int x[SIZE], y[SIZE];       // window column, image row
+  alignas(32) int at[SIZE];               // the pixel's index in the image (row * width + column)
   alignas(32) float z[SIZE], w[3][SIZE];  // by weigh()
 
   // Whether the next span might not fit: draw the chunk first.
   bool full() const { return count > CAPACITY - SPAN; }
 
-  // Appends the pixels of span (window columns wx .. wx + SPAN - 1 of image row `row`) whose bit
-  // is set in `covered`.
-  void append(const EdgeSpan& span, unsigned covered, int wx, int row) {
+  // Appends the pixels of span (image pixels first .. first + SPAN - 1 of one row) whose bit is set
+  // in `covered`.
+  void append(const EdgeSpan& span, unsigned covered, int first) {
 #ifdef __AVX2__
     // Whole vectors written at `count`: the lanes past the covered ones are overwritten next.
     const __m256i order =
@@ -62,14 +62,13 @@ struct CoveredPixels {
                                          _mm256_castpd_si256(__m256d(span.b[k])), order)));
     const __m128i lanes =
         _mm_load_si128(reinterpret_cast<const __m128i*>(PACK_ORDER.lanes[covered]));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(x + count),
-                     _mm_add_epi32(_mm_set1_epi32(wx), lanes));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(y + count), _mm_set1_epi32(row));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(at + count),
+                     _mm_add_epi32(_mm_set1_epi32(first), lanes));
     count += __builtin_popcount(covered);
 #else
     for (int j = 0; j < SPAN; ++j) {
       for (int k = 0; k < 3; ++k) b[k][count] = span.b[k][j];
-      x[count] = wx + j, y[count] = row;
+      at[count] = first + j;
       count += int((covered >> j) & 1u);
     }
 #endif

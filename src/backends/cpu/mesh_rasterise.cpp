@@ -26,6 +26,7 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
   // height - 1 - y).
   const int x_lo = std::max(s.x0, t.x0), x_hi = std::min(s.x1, t.x1 - 1);
   const int y_lo = std::max(s.y0, height - t.y1), y_hi = std::min(s.y1, height - 1 - t.y0);
+  const int width = (out.colour ? out.colour : out.depth)->width;  // the same for both
   const WindowVertex* wv[3] = {&d.window[s.v[0]], &d.window[s.v[1]], &d.window[s.v[2]]};
   // Edge k runs from vertex k + 1 to k + 2; edge(a, c, p) = ex * (p.y - a.y) - ey * (p.x - a.x)
   // with its per-triangle and per-row parts computed once: the same operations on the same values.
@@ -44,22 +45,25 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
   frag.front_facing = s.front;
   frag.inputs = out.inputs;
   const unsigned i0 = s.v[0], i1 = s.v[1], i2 = s.v[2];
-  auto write = [&](int x, int y, float z, const glm::vec4& c) {
+  // Pixel i of the image in the depth and colour targets (run_mesh_pass checked their sizes).
+  auto depth_at = [&](int i) -> float& { return out.depth->pixels[size_t(i) * 4]; };
+  auto colour_at = [&](int i) { return &out.colour->pixels[size_t(i) * 4]; };
+  auto write = [&](int i, float z, const glm::vec4& c) {
     if (c.a < pass.alpha_cutoff) return;
-    if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+    if (out.depth && out.write_depth) depth_at(i) = z;
     if (!out.colour) return;
-    float* px = out.colour->at(x, y);
+    float* px = colour_at(i);
     px[0] = c.r;
     px[1] = c.g;
     px[2] = c.b;
     px[3] = c.a;
   };
   // One covered pixel, one at a time.
-  auto fragment = [&](int x, int y, float z, float w0, float w1, float w2) {
+  auto fragment = [&](int i, float z, float w0, float w1, float w2) {
     if (z < 0.0f || z > 1.0f) return;  // outside the near/far range, as GL clips
-    if (!late && out.depth && out.test && !(z < out.depth->at(x, y)[0])) return;
+    if (!late && out.depth && out.test && !(z < depth_at(i))) return;
     if (!late && !pass.shade) {  // depth only, nothing to discard
-      if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z;
+      if (out.depth && out.write_depth) depth_at(i) = z;
       return;
     }
     frag.world_position = d.world[i0] * w0 + d.world[i1] * w1 + d.world[i2] * w2;
@@ -68,11 +72,11 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     glm::vec4 c;
     if (late) {
       if (!pass.shade_depth(frag, c, z)) return;
-      if (out.depth && out.test && !(z < out.depth->at(x, y)[0])) return;
+      if (out.depth && out.test && !(z < depth_at(i))) return;
     } else {
       c = pass.shade(frag);
     }
-    write(x, y, z, c);
+    write(i, z, c);
   };
   CoveredPixels pixels;
   // The lanes' path (MeshPass::shade8): pixels i .. i + n - 1 of the chunk, the same tests and
@@ -84,8 +88,7 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     M8 keep = used & ~((z < 0.0f) | (z > 1.0f));  // outside the near/far range, as GL clips
     if (out.depth && out.test) {
       F8 stored;
-      for (int k = 0; k < LANES; ++k)
-        stored[k] = out.depth->at(pixels.x[i + k], pixels.y[i + k])[0];
+      for (int k = 0; k < LANES; ++k) stored[k] = depth_at(pixels.at[i + k]);
       keep &= z < stored;
     }
     if (!any(keep)) return;
@@ -103,14 +106,15 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     f8.front_facing = frag.front_facing;
     f8.inputs = frag.inputs;
     f8.count = n;
-    FragmentColours8 c{};
+    FragmentColours8 c;  // zeros by assignment: c{} is a rep stos, slow to start
+    c.r = c.g = c.b = c.a = splat(0.0f);
     pass.shade8(f8, c);
     for (unsigned bits = lane_bits(keep & ~(c.a < pass.alpha_cutoff)); bits != 0;
          bits &= bits - 1) {
-      const int k = __builtin_ctz(bits), x = pixels.x[i + k], y = pixels.y[i + k];
-      if (out.depth && out.write_depth) out.depth->at(x, y)[0] = z[k];
+      const int k = __builtin_ctz(bits), at = pixels.at[i + k];
+      if (out.depth && out.write_depth) depth_at(at) = z[k];
       if (!out.colour) continue;
-      float* px = out.colour->at(x, y);
+      float* px = colour_at(at);
       px[0] = c.r[k];
       px[1] = c.g[k];
       px[2] = c.b[k];
@@ -127,19 +131,18 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
       for (int i = 0; i < pixels.count; i += LANES) group(i, std::min(LANES, pixels.count - i));
     else
       for (int i = 0; i < pixels.count; ++i)
-        fragment(pixels.x[i], pixels.y[i], pixels.z[i], pixels.w[0][i], pixels.w[1][i],
-                 pixels.w[2][i]);
+        fragment(pixels.at[i], pixels.z[i], pixels.w[0][i], pixels.w[1][i], pixels.w[2][i]);
     pixels.count = 0;
   };
   for (int wy = y_lo; wy <= y_hi; ++wy) {
     edges.start_row(wy);
     int first = x_lo, last = x_hi;
     if (!narrow && !edges.columns(first, last)) continue;
-    const int y = height - 1 - wy;
+    const int row_start = (height - 1 - wy) * width;
     for (int wx = first; wx <= last; wx += SPAN) {
       if (pixels.full()) draw();
       EdgeSpan span;
-      pixels.append(span, edges.cover(wx, last, span), wx, y);
+      pixels.append(span, edges.cover(wx, last, span), row_start + wx);
     }
   }
   draw();
