@@ -6,6 +6,7 @@
 
 #include "scenes/common/texture.h"
 #include "scenes/lantern_festival/grid.h"
+#include "sdf/lanes.h"
 
 namespace sdfreel::lantern_festival {
 
@@ -31,10 +32,12 @@ struct LanternHit {
   LanternCell cell;  // the lantern that was hit
 };
 
-// The seed's flicker: a sum of three cosines in [0.15, 0.85].
+// The seed's flicker: a sum of three cosines in [0.15, 0.85]. The three run as lanes of one
+// dm::cos (each lane the scalar function's bits): a lantern hit's candle costs one.
 inline float flickerValue(float t) {
-  return (dm::cos(t * 2.0f * dm::PI) + 2.0f) * 0.15f + (dm::cos(t * 3.0f * dm::PI) + 1.0f) * 0.1f +
-         (dm::cos(t * 2.5f * dm::PI) + 1.0f) * 0.1f;
+  const F8 c = dm::cos(
+      F8{t * 2.0f * dm::PI, t * 3.0f * dm::PI, t * 2.5f * dm::PI, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f});
+  return (c[0] + 2.0f) * 0.15f + (c[1] + 1.0f) * 0.1f + (c[2] + 1.0f) * 0.1f;
 }
 
 // The seed's lightStrength *= mix(0.3, 0.8, flickerValue), blended towards its middle (0.55) as

@@ -181,6 +181,13 @@ TEST(LanternFestivalScene, FlickerFollowsTheSeedsCosines) {
   EXPECT_NEAR(flickerValue(0.0f), 0.85f, 1e-6f);
   // Period 4 (FLICKER_PERIOD): the per-lantern phase offsets wrap cleanly.
   EXPECT_NEAR(flickerValue(0.7f), flickerValue(4.7f), 2e-6f);
+  // Its three cosines run in lanes: the bits of the scalar sum, over the clock's range and past it.
+  for (float t = -1.0f; t < 9.0f; t += 0.000731f) {
+    const float scalar = (dm::cos(t * 2.0f * dm::PI) + 2.0f) * 0.15f +
+                         (dm::cos(t * 3.0f * dm::PI) + 1.0f) * 0.1f +
+                         (dm::cos(t * 2.5f * dm::PI) + 1.0f) * 0.1f;
+    ASSERT_EQ(flickerValue(t), scalar) << "t " << t;
+  }
 }
 
 TEST(LanternFestivalScene, ShaderInterface) {
