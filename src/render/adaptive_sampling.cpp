@@ -28,10 +28,6 @@ glm::vec3 display_value(const glm::vec3& mean) {
   return glm::vec3(display_curve(mean.x), display_curve(mean.y), display_curve(mean.z));
 }
 
-float display_difference(const glm::vec3& a, const glm::vec3& b) {
-  return std::max(std::fabs(a.x - b.x), std::max(std::fabs(a.y - b.y), std::fabs(a.z - b.z)));
-}
-
 float own_error(int taken, const glm::vec3& sum, const glm::vec3& sum_odd) {
   if (taken < 2) return 0.0f;
   const float inv_even = 1.0f / float((taken + 1) / 2), inv_odd = 1.0f / float(taken / 2);

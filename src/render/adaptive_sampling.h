@@ -15,6 +15,8 @@
 //   difference between the pixel's mean and one of its eight neighbours'. A strut, star or glint
 //   that both of a pixel's first samples miss leaves the pixel flat but its neighbours different,
 //   and an edge's coverage error shrinks about as 1 / samples for R2 points.
+#include <algorithm>
+#include <cmath>
 #include <glm/glm.hpp>
 #include <string>
 
@@ -38,8 +40,11 @@ int first_round_samples(const AdaptiveSampling& a);
 int next_round_end(const AdaptiveSampling& a, int taken);
 // A linear mean's display value, per channel sqrt(x / (1 + x)) (negative values as 0).
 glm::vec3 display_value(const glm::vec3& mean);
-// The largest channel difference of two display values.
-float display_difference(const glm::vec3& a, const glm::vec3& b);
+// The largest channel difference of two display values (inline: LivePixels::contrast takes nine
+// a live pixel every round).
+inline float display_difference(const glm::vec3& a, const glm::vec3& b) {
+  return std::max(std::fabs(a.x - b.x), std::max(std::fabs(a.y - b.y), std::fabs(a.z - b.z)));
+}
 // The pixel's own estimate from the sums of its `taken` samples: all of them, and those at odd
 // list positions (1, 3, 5...). 0 when taken < 2.
 float own_error(int taken, const glm::vec3& sum, const glm::vec3& sum_odd);
