@@ -6,8 +6,7 @@
 
 #include <cstring>
 
-#include "backends/cpu/plan_runner.h"
-#include "scenes/registry.h"
+#include "scenes/plan_passes.h"
 
 namespace sdfreel {
 namespace {
@@ -27,14 +26,7 @@ FrameContext scene_context(const SceneInfo& info, bool hit_mask, int surface) {
 
 // The targets after `pass` alone, on targets cleared to the plan's values.
 CpuTargets after(const RayPass& pass, const FramePlan& plan, const FrameContext& ctx) {
-  const CpuPassContext pc{
-      ctx,
-      glm::vec2(0.25f, 0.75f),
-      make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane),
-      footprint_angle(ctx.camera.tan_half_fov, ctx.height),
-      2,
-      16,
-      true};
+  const CpuPassContext pc = test::plan_pass_context(plan, ctx, glm::vec2(0.25f, 0.75f), 2);
   CpuTargets targets(plan_targets(plan), ctx.width, ctx.height);
   targets.clear();
   RayStats stats;
