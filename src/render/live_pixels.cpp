@@ -69,6 +69,7 @@ int LivePixels::decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd
       }
     live += live_here;
   });
+  all_live_ = all_live_ && size_t(live.load()) == live_.size();
   return live;
 }
 

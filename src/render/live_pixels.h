@@ -28,6 +28,8 @@ class LivePixels {
   // pixels are still live.
   int decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd);
   bool live(size_t pixel) const { return live_[pixel] != 0; }
+  // No pixel has stopped yet (fixed sampling, or before the first decision that stops one).
+  bool all_live() const { return all_live_; }
   const std::vector<uint8_t>& mask() const { return live_; }
   const SampleCounts& counts() const { return taken_; }
 
@@ -36,6 +38,7 @@ class LivePixels {
 
   AdaptiveSampling a_;
   int width_, height_, threads_, next_end_;
+  bool all_live_ = true;
   std::vector<uint8_t> live_;
   SampleCounts taken_;              // `maximum` until the pixel stops
   std::vector<glm::vec3> display_;  // each pixel's mean at its last round, display values

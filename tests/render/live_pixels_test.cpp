@@ -1,7 +1,8 @@
 // Adaptive sampling's decisions (render/live_pixels.h) do not depend on how many threads take
 // them: on a frame of random sums, with regions that settle and edges that do not, every round
 // leaves the same pixels live with the same counts at 1, 2, 3 and 8 threads, and the same
-// decisions as a plain per-pixel loop over the documented rule.
+// decisions as a plain per-pixel loop over the documented rule; all_live() holds until the first
+// pixel stops.
 #include "render/live_pixels.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +67,7 @@ TEST(LivePixels, DecisionsAreTheRuleAtAnyThreadCount) {
   a.threshold = 0.02f;
   std::vector<LivePixels> runs;
   for (int threads : {1, 2, 3, 8}) runs.emplace_back(a, W, H, threads);
+  EXPECT_TRUE(runs[0].all_live());
   std::vector<glm::vec3> display(size_t(W) * H);
   std::vector<uint8_t> want(size_t(W) * H, 1);
   std::mt19937 rng(3);
@@ -79,6 +81,8 @@ TEST(LivePixels, DecisionsAreTheRuleAtAnyThreadCount) {
       EXPECT_EQ(run.decide(taken, sum, odd), want_live) << "taken " << taken;
       EXPECT_EQ(run.mask(), want) << "taken " << taken;
       EXPECT_EQ(run.counts(), runs[0].counts());
+      // all_live (the CPU's plain sum loops) until a decision stops a pixel, never after.
+      EXPECT_EQ(run.all_live(), stopped_somewhere == 0 && want_live == W * H) << "taken " << taken;
     }
     stopped_somewhere += want_live < W * H ? 1 : 0;
     ++rounds;
