@@ -56,23 +56,21 @@ inline bool any(bool m) {
 inline bool all(bool m) {
   return m;
 }
-inline bool any(M8 m) {
+// Bit i set where lane i is: for a loop over the set lanes.
+inline unsigned lane_bits(M8 m) {
 #ifdef __AVX__
-  return _mm256_movemask_ps(reinterpret_cast<__m256>(m)) != 0;
+  return unsigned(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 #else
-  for (int i = 0; i < LANES; ++i)
-    if (m[i]) return true;
-  return false;
+  unsigned bits = 0;
+  for (int i = 0; i < LANES; ++i) bits |= m[i] != 0 ? 1u << i : 0u;
+  return bits;
 #endif
 }
+inline bool any(M8 m) {
+  return lane_bits(m) != 0;
+}
 inline bool all(M8 m) {
-#ifdef __AVX__
-  return _mm256_movemask_ps(reinterpret_cast<__m256>(m)) == 0xff;
-#else
-  for (int i = 0; i < LANES; ++i)
-    if (!m[i]) return false;
-  return true;
-#endif
+  return lane_bits(m) == 0xffu;
 }
 // A per-frame flag or'ed into a per-point condition (a bool, or a mask of lanes).
 inline bool either(bool uniform, bool m) {
@@ -83,23 +81,7 @@ inline M8 either(bool uniform, M8 m) {
 }
 // Number of set lanes: what a masked loop adds to the ray statistics.
 inline uint64_t count_lanes(M8 m) {
-#ifdef __AVX__
-  return uint64_t(__builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(m))));
-#else
-  uint64_t n = 0;
-  for (int i = 0; i < LANES; ++i) n += m[i] != 0;
-  return n;
-#endif
-}
-// Bit i set where lane i is: for a loop over the set lanes.
-inline unsigned lane_bits(M8 m) {
-#ifdef __AVX__
-  return unsigned(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
-#else
-  unsigned bits = 0;
-  for (int i = 0; i < LANES; ++i) bits |= m[i] != 0 ? 1u << i : 0u;
-  return bits;
-#endif
+  return uint64_t(__builtin_popcount(lane_bits(m)));
 }
 // Lane i of a mask as a bool.
 inline bool lane(M8 m, int i) {

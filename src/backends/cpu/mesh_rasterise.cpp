@@ -48,15 +48,19 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
   // Pixel i of the image in the depth and colour targets (run_mesh_pass checked their sizes).
   auto depth_at = [&](int i) -> float& { return out.depth->pixels[size_t(i) * 4]; };
   auto colour_at = [&](int i) { return &out.colour->pixels[size_t(i) * 4]; };
-  auto write = [&](int i, float z, const glm::vec4& c) {
-    if (c.a < pass.alpha_cutoff) return;
+  // A fragment that passed every test, alpha's included.
+  auto put = [&](int i, float z, float r, float g, float b, float a) {
     if (out.depth && out.write_depth) depth_at(i) = z;
     if (!out.colour) return;
     float* px = colour_at(i);
-    px[0] = c.r;
-    px[1] = c.g;
-    px[2] = c.b;
-    px[3] = c.a;
+    px[0] = r;
+    px[1] = g;
+    px[2] = b;
+    px[3] = a;
+  };
+  auto write = [&](int i, float z, const glm::vec4& c) {
+    if (c.a < pass.alpha_cutoff) return;
+    put(i, z, c.r, c.g, c.b, c.a);
   };
   // One covered pixel, one at a time.
   auto fragment = [&](int i, float z, float w0, float w1, float w2) {
@@ -111,14 +115,8 @@ void rasterise(const RasterTriangle& s, const VertexArrays& d, const MeshPass& p
     pass.shade8(f8, c);
     for (unsigned bits = lane_bits(keep & ~(c.a < pass.alpha_cutoff)); bits != 0;
          bits &= bits - 1) {
-      const int k = __builtin_ctz(bits), at = pixels.at[i + k];
-      if (out.depth && out.write_depth) depth_at(at) = z[k];
-      if (!out.colour) continue;
-      float* px = colour_at(at);
-      px[0] = c.r[k];
-      px[1] = c.g[k];
-      px[2] = c.b[k];
-      px[3] = c.a[k];
+      const int k = __builtin_ctz(bits);
+      put(pixels.at[i + k], z[k], c.r[k], c.g[k], c.b[k], c.a[k]);
     }
   };
   // The covered pixels in chunks: packed row by row, then weighed and drawn in that order.
