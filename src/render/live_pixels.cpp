@@ -10,6 +10,7 @@ namespace sdfreel {
 namespace {
 
 constexpr size_t ROWS_A_TASK = 16;
+constexpr size_t PIXELS_A_TASK = 1 << 14;
 
 glm::vec3 rgb(const float* p) {
   return glm::vec3(p[0], p[1], p[2]);
@@ -24,8 +25,7 @@ LivePixels::LivePixels(const AdaptiveSampling& a, int width, int height, int thr
       threads_(threads),
       next_end_(first_round_samples(a)),
       live_(size_t(width) * height, 1),
-      taken_(size_t(width) * height, uint16_t(a.maximum)),
-      display_(size_t(width) * height) {}
+      taken_(size_t(width) * height, uint16_t(a.maximum)) {}
 
 bool LivePixels::round_ends_at(int taken) const {
   return taken == next_end_ && taken < a_.maximum;
@@ -44,6 +44,7 @@ int LivePixels::decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd
   next_end_ = next_round_end(a_, taken);
   const float inv_taken = 1.0f / float(taken);
   const size_t width = size_t(width_);
+  display_.resize(live_.size());  // at the first decision: fixed sampling never needs it
   for_each_range(size_t(height_), ROWS_A_TASK, threads_, [&](size_t y0, size_t y1) {
     for (size_t i = y0 * width; i < y1 * width; ++i)
       if (live_[i]) display_[i] = display_value(rgb(&sum.pixels[i * 4]) * inv_taken);
@@ -73,15 +74,17 @@ int LivePixels::decide(int taken, const ImageRGBA& sum, const ImageRGBA& sum_odd
   return live;
 }
 
-void normalise_sums(ImageRGBA& sum, const SampleCounts& counts) {
-  for (size_t i = 0; i < counts.size(); ++i) {
-    const float inv_samples = 1.0f / float(counts[i]);
-    float* p = &sum.pixels[i * 4];
-    p[0] *= inv_samples;
-    p[1] *= inv_samples;
-    p[2] *= inv_samples;
-    p[3] = 1.0f;
-  }
+void normalise_sums(ImageRGBA& sum, const SampleCounts& counts, int threads) {
+  for_each_range(counts.size(), PIXELS_A_TASK, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const float inv_samples = 1.0f / float(counts[i]);
+      float* p = &sum.pixels[i * 4];
+      p[0] *= inv_samples;
+      p[1] *= inv_samples;
+      p[2] *= inv_samples;
+      p[3] = 1.0f;
+    }
+  });
 }
 
 }  // namespace sdfreel

@@ -41,10 +41,12 @@ class LivePixels {
   bool all_live_ = true;
   std::vector<uint8_t> live_;
   SampleCounts taken_;              // `maximum` until the pixel stops
-  std::vector<glm::vec3> display_;  // each pixel's mean at its last round, display values
+  std::vector<glm::vec3> display_;  // each pixel's mean at its last round, display values;
+                                    // sized at the first decision
 };
 
-// The frame: each pixel's sum times 1 / its count (as fixed sampling's 1 / count), alpha 1.
-void normalise_sums(ImageRGBA& sum, const SampleCounts& counts);
+// The frame: each pixel's sum times 1 / its count (as fixed sampling's 1 / count), alpha 1; on
+// `threads` threads (render/tiling.h), each pixel on its own.
+void normalise_sums(ImageRGBA& sum, const SampleCounts& counts, int threads);
 
 }  // namespace sdfreel

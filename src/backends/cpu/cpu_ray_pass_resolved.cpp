@@ -1,5 +1,7 @@
 #include "backends/cpu/cpu_ray_pass_resolved.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <vector>
 
@@ -21,42 +23,48 @@ namespace {
 // summed in list order): enough packets to amortise a task, few enough to balance threads.
 constexpr int CHUNK_PAIRS = 512;
 
-struct SamplePair {
-  int pixel, sample;  // pixel index in the frame, sample index in the list
-};
-
 struct Sums {
   ImageRGBA all, odd;      // all samples; those at odd list positions
   float* evals = nullptr;  // SDF evaluations of all samples, a value a pixel; null: none
 };
 
-// Traces pairs [from, to) eight at a time (the last packet padded with its last ray) and adds each
-// result to its pixel's sums.
-void trace_pairs(const RayPass& pass, const CpuPassContext& pc,
-                 const std::vector<SamplePair>& pairs, int from, int to, const glm::vec3& clear,
-                 Sums& sums, RayStats& stats) {
+// A round's (pixel, sample) pairs, never stored: pair k is sample `from + k % samples` of pixel
+// `pixels[k / samples]` (tens of megabytes of pairs, written on one thread, cost a card frame
+// more than a tenth of its time).
+struct RoundPairs {
+  const int* pixels;  // the live pixels, tile by tile
+  int samples, from;  // samples a pixel takes this round, the first one's index
+  int pixel(int k) const { return pixels[k / samples]; }
+  int sample(int k) const { return from + k % samples; }
+};
+
+// Traces pairs [first, last) eight at a time (the last packet padded with its last ray) and adds
+// each result to its pixel's sums.
+void trace_pairs(const RayPass& pass, const CpuPassContext& pc, const RoundPairs& pairs, int first,
+                 int last, const glm::vec3& clear, Sums& sums, RayStats& stats) {
   const FrameContext& f = pc.frame;
   RayPassOutput result;
-  for (int base = from; base < to; base += LANES) {
-    const int count = to - base < LANES ? to - base : LANES;
+  for (int base = first; base < last; base += LANES) {
+    const int count = last - base < LANES ? last - base : LANES;
     F8 x, y;
     for (int i = 0; i < LANES; ++i) {
-      const SamplePair& p = pairs[size_t(base + (i < count ? i : count - 1))];
-      const glm::vec2& o = f.sample_offsets[size_t(p.sample)];
-      x[i] = float(p.pixel % f.width) + o.x;
-      y[i] = float(p.pixel / f.width) + o.y;
+      const int k = base + (i < count ? i : count - 1);
+      const int pixel = pairs.pixel(k);
+      const glm::vec2& o = f.sample_offsets[size_t(pairs.sample(k))];
+      x[i] = float(pixel % f.width) + o.x;
+      y[i] = float(pixel / f.width) + o.y;
     }
     trace_packet(pass, pc, x, y, count, result, stats);
     for (int i = 0; i < count; ++i) {
-      const SamplePair& p = pairs[size_t(base + i)];
+      const int pixel = pairs.pixel(base + i);
       const glm::vec3 c = result.keep[i] ? result.colour[i] : clear;
-      float* s = &sums.all.pixels[size_t(p.pixel) * 4];
+      float* s = &sums.all.pixels[size_t(pixel) * 4];
       s[0] += c.x;
       s[1] += c.y;
       s[2] += c.z;
-      if (sums.evals && result.keep[i]) sums.evals[p.pixel] += float(result.evals[i]);
-      if (p.sample & 1) {
-        float* o = &sums.odd.pixels[size_t(p.pixel) * 4];
+      if (sums.evals && result.keep[i]) sums.evals[pixel] += float(result.evals[i]);
+      if (pairs.sample(base + i) & 1) {
+        float* o = &sums.odd.pixels[size_t(pixel) * 4];
         o[0] += c.x;
         o[1] += c.y;
         o[2] += c.z;
@@ -76,26 +84,25 @@ std::vector<int> pixels_by_tile(int width, int height, int tile_size) {
   return order;
 }
 
-// One round: samples [from, to) of every live pixel, in chunks of whole pixels across threads.
+// One round: samples [from, to) of every live pixel, in chunks of whole pixels across threads,
+// each chunk the fewest pixels that hold CHUNK_PAIRS pairs.
 void run_round(const RayPass& pass, const CpuPassContext& pc, const std::vector<int>& order,
                const LivePixels& live, int from, int to, const glm::vec3& clear, Sums& sums,
                RayStats& stats) {
-  std::vector<SamplePair> pairs;
-  // Room for every pixel's samples at once: growing by doubling copied tens of megabytes into
-  // freshly faulted pages (a quarter of a card frame's page faults).
-  pairs.reserve(order.size() * size_t(to - from));
-  std::vector<int> chunk_starts;
-  for (int pixel : order) {
-    if (!live.live(size_t(pixel))) continue;
-    if (chunk_starts.empty() || int(pairs.size()) - chunk_starts.back() >= CHUNK_PAIRS)
-      chunk_starts.push_back(int(pairs.size()));
-    for (int s = from; s < to; ++s) pairs.push_back({pixel, s});
-  }
-  const int chunks = int(chunk_starts.size());
-  chunk_starts.push_back(int(pairs.size()));
+  std::vector<int> live_order;  // while every pixel is live, `order` itself
+  if (!live.all_live())
+    for (int pixel : order)
+      if (live.live(size_t(pixel))) live_order.push_back(pixel);
+  const std::vector<int>& pixels = live.all_live() ? order : live_order;
+  const RoundPairs pairs{pixels.data(), to - from, from};
+  const int chunk_pixels = (CHUNK_PAIRS + pairs.samples - 1) / pairs.samples;
+  const int count = int(pixels.size());
+  const int chunks = (count + chunk_pixels - 1) / chunk_pixels;
   std::vector<RayStats> chunk_stats(static_cast<size_t>(chunks));
   for_each_index(size_t(chunks), pc.threads, [&](size_t c) {
-    trace_pairs(pass, pc, pairs, chunk_starts[c], chunk_starts[c + 1], clear, sums, chunk_stats[c]);
+    const int first = int(c) * chunk_pixels, last = std::min(count, first + chunk_pixels);
+    trace_pairs(pass, pc, pairs, first * pairs.samples, last * pairs.samples, clear, sums,
+                chunk_stats[c]);
   });
   for (const RayStats& s : chunk_stats) stats.add(s);
 }
@@ -107,20 +114,26 @@ ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
                                 std::vector<float>* evals) {
   const FrameContext& f = pc.frame;
   const AdaptiveSampling a = sampling_of(f);
-  Sums sums{ImageRGBA(f.width, f.height), ImageRGBA(f.width, f.height)};
+  // Tens of megabytes of fresh, zeroed memory: each buffer filled on a thread of its own.
+  Sums sums;
+  std::vector<int> order;
+  with_threads(pc.threads, [&] {
+    tbb::parallel_invoke([&] { sums.all = ImageRGBA(f.width, f.height); },
+                         [&] { sums.odd = ImageRGBA(f.width, f.height); },
+                         [&] { order = pixels_by_tile(f.width, f.height, pc.tile_size); });
+  });
   if (evals) {
     evals->assign(size_t(f.width) * f.height, 0.0f);
     if (!pass.sdf_evals.empty()) sums.evals = evals->data();
   }
   LivePixels live(a, f.width, f.height, pc.threads);
-  const std::vector<int> order = pixels_by_tile(f.width, f.height, pc.tile_size);
   for (int from = 0;;) {
     const int to = live.round_end();
     run_round(pass, pc, order, live, from, to, glm::vec3(clear), sums, stats);
     from = to;
     if (to >= a.maximum || live.decide(to, sums.all, sums.odd) == 0) break;
   }
-  normalise_sums(sums.all, live.counts());
+  normalise_sums(sums.all, live.counts(), pc.threads);
   if (counts) *counts = live.counts();
   return std::move(sums.all);
 }

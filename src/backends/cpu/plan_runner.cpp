@@ -111,7 +111,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     }
   }
   // Times 1 / count, as the samples' mean always was; alpha is coverage, 1 for every frame.
-  normalise_sums(sum, live.counts());
+  normalise_sums(sum, live.counts(), s.threads);
   if (counts) *counts = live.counts();
   return sum;
 }

@@ -237,7 +237,7 @@ ImageRGBA GlPlanRunner::run(const FramePlan& plan, const FrameContext& ctx,
   const ImageRGBA evals = driver_.read_rgba(targets_.framebuffer({SUM_EVALS}, "", "read back"));
   // Times 1 / count as on the CPU; alpha is coverage, 1. Evaluation counts are exact integers in
   // float (below 2^24 a pixel).
-  normalise_sums(img, live.counts());
+  normalise_sums(img, live.counts(), threads_);
   for (size_t i = 0; i < evals.pixels.size(); i += 4) stats.sdf_evals += uint64_t(evals.pixels[i]);
   if (evals_out) {
     evals_out->resize(evals.pixels.size() / 4);

@@ -1,5 +1,8 @@
 #include "scenes/lenticular_card/textures.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <mutex>
 #include <stdexcept>
@@ -29,9 +32,10 @@ InterlaceLayout card_layout(int views) {
 
 Texture by_strip(const Texture& print, int views) {
   Texture t(print.width / views, print.height * views, print.channels);
-  for (int y = 0; y < print.height; ++y)
+  tbb::parallel_for(0, print.height, [&](int y) {
     for (int x = 0; x < print.width; ++x)
       std::copy_n(print.at(x, y), print.channels, t.at(x / views, (x % views) * print.height + y));
+  });
   return t;
 }
 
@@ -39,29 +43,37 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
   if (a.empty() || a.size() != b.size())
     throw std::invalid_argument("lenticular_card: the two prints need the same number of views");
   const InterlaceLayout layout = card_layout(int(a.size()));
-  const Rgb8Image pa = interlace(a, layout), pb = interlace(b, layout);
+  Rgb8Image pa, pb;
+  tbb::parallel_invoke([&] { pa = interlace(a, layout); }, [&] { pb = interlace(b, layout); });
   if (pa.width != pb.width || pa.height != pb.height)
     throw std::invalid_argument("lenticular_card: the two prints differ in size");
   float decode[256];
   for (int i = 0; i < 256; ++i) decode[i] = srgb_to_linear(float(i) / 255.0f) * PRINT_REFLECTANCE;
-  auto print = std::make_shared<Texture>(pa.width, pa.height * 2, 4);
-  std::string bytes;
-  for (int y = 0; y < print->height; ++y)
-    for (int x = 0; x < print->width; ++x) {
-      const Rgb8Image& src = y < pa.height ? pa : pb;
-      const uint8_t* p = src.at(x, y % pa.height);
-      float* t = print->at(x, y);
-      t[0] = decode[p[0]], t[1] = decode[p[1]], t[2] = decode[p[2]], t[3] = 1.0f;
-      bytes.append(reinterpret_cast<const char*>(p), 3);
-    }
   CardPrints out;
   out.lenses = a[0].width;
   out.views = int(a.size());
   out.view_height = a[0].height;
+  // The print's bytes, a over b, name its texels; the textures fill on threads of their own.
+  auto print = std::make_shared<Texture>();
+  tbb::parallel_invoke(
+      [&] {
+        std::vector<uint8_t> bytes(pa.rgb);
+        bytes.insert(bytes.end(), pb.rgb.begin(), pb.rgb.end());
+        out.key = checksum64(bytes.data(), bytes.size()) | 1ull;  // never 0 ("unknown")
+      },
+      [&] { out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED)); },
+      [&] {
+        *print = Texture(pa.width, pa.height * 2, 4);
+        tbb::parallel_for(0, print->height, [&](int y) {
+          const Rgb8Image& src = y < pa.height ? pa : pb;
+          const uint8_t* p = src.at(0, y % pa.height);
+          float* t = print->at(0, y);
+          for (int x = 0; x < print->width; ++x, p += 3, t += 4)
+            t[0] = decode[p[0]], t[1] = decode[p[1]], t[2] = decode[p[2]], t[3] = 1.0f;
+        });
+      });
   out.print = print;
   out.print_by_strip = std::make_shared<Texture>(by_strip(*print, out.views));
-  out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED));
-  out.key = checksum64(bytes.data(), bytes.size()) | 1ull;  // never 0 ("unknown")
   return out;
 }
 
