@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "io/audio_source.h"
 #include "io/bounded_read.h"
+#include "io/video_module.h"
 #include "pipeline/errors.h"
 #include "timeline/sha256.h"
 
@@ -26,9 +26,7 @@ void check_soundtrack(const Timeline& tl) {
   try {
     // A FIFO would block the decoder's open; the bytes are read once, for the manifest's hash.
     check_regular_file(tl.audio.path, kMaxAudioBytes);
-    AudioSource source(tl.audio.path, 0.0);
-    std::vector<float> samples;
-    if (source.read(samples, 1024) == 0)
+    if (video_module().audio_frames(tl.audio.path, 1024) == 0)
       throw std::runtime_error(tl.audio.path + ": it holds no audio samples");
   } catch (const std::exception& e) {
     throw InputError(tl.path, tl.audio.line, tl.audio.column,

@@ -4,9 +4,6 @@
 // container expects, as packets the video encoder interleaves (io/video_encoder.h).
 #include <memory>
 #include <string>
-#include <vector>
-
-#include "io/video_av.h"
 
 namespace sdfreel {
 
@@ -17,22 +14,16 @@ struct AudioCut {
   double fade = 0.0;    // seconds of linear fade-out before the end (0: none)
 };
 
-struct EncodedAudio {
-  std::string encoder;  // aac, libopus or pcm_s16le
-  AVCodecParameters* params = nullptr;
-  AVRational time_base{1, 48000};
-  std::vector<AvPacketPtr> packets;  // in order, pts in time_base from 0
-  EncodedAudio() = default;
-  EncodedAudio(const EncodedAudio&) = delete;
-  EncodedAudio& operator=(const EncodedAudio&) = delete;
-  ~EncodedAudio() { avcodec_parameters_free(&params); }
-};
+// The encoded soundtrack: libav's packets, made and read only in the video module
+// (plugins/video_av/encoded_audio.h).
+struct EncodedAudio;
 
 // The audio encoder a video file's container takes: AAC in MP4, PCM in MOV, Opus in WebM and
 // MKV; "" for an animated WebP or GIF, which hold no sound.
 std::string soundtrack_encoder_for(const std::string& video_path);
 
-// Decodes, cuts, fades and encodes. Throws std::runtime_error naming the file and what is wrong.
+// Decodes, cuts, fades and encodes (in the video module, io/video_module.h). Throws
+// std::runtime_error naming the file and what is wrong.
 std::shared_ptr<const EncodedAudio> encode_soundtrack(const AudioCut& cut,
                                                       const std::string& video_path);
 

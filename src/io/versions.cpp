@@ -4,10 +4,12 @@
 #include <OpenEXR/OpenEXRConfig.h>
 #include <png.h>
 
+// The versions sdfreel was built against (its video module links them, io/video_module.h):
+// asking the libraries would load them at every start.
 extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libswscale/swscale.h>
+#include <libavcodec/version.h>
+#include <libavformat/version.h>
+#include <libswscale/version.h>
 }
 
 namespace sdfreel {
@@ -25,9 +27,9 @@ std::map<std::string, std::string> io_library_versions() {
   return {{"libpng", PNG_LIBPNG_VER_STRING},
           {"opencolorio", OCIO_NAMESPACE::GetVersion()},
           {"openexr", OPENEXR_VERSION_STRING},
-          {"libavcodec", av_version_string(avcodec_version())},
-          {"libavformat", av_version_string(avformat_version())},
-          {"libswscale", av_version_string(swscale_version())}};
+          {"libavcodec", av_version_string(LIBAVCODEC_VERSION_INT)},
+          {"libavformat", av_version_string(LIBAVFORMAT_VERSION_INT)},
+          {"libswscale", av_version_string(LIBSWSCALE_VERSION_INT)}};
 }
 
 }  // namespace sdfreel

@@ -3,7 +3,9 @@
 // private options. Kept apart from the encoding loop so the choices can be read in one place.
 #include <string>
 
-#include "io/video_av.h"
+extern "C" {
+#include <libavutil/pixfmt.h>
+}
 
 namespace sdfreel {
 
@@ -19,11 +21,8 @@ struct VideoCodecSpec {
 
 const VideoCodecSpec* find_video_codec(const std::string& name);  // nullptr when unknown
 std::string known_video_codecs();                                 // "h264, ..., prores"
-// "" when this machine's libav has the codec's encoder; else what is missing, for the user.
+// "" when this machine's libav has the codec's encoder; else what is missing, for the user. A
+// known codec's check opens the video module (io/video_module.h).
 std::string missing_video_encoder(const std::string& codec);
-
-// Sets size, rates, pixel format, colour tags and the codec's own options before avcodec_open2.
-void configure_video_codec(const VideoCodecSpec& spec, AVCodecContext* ctx, int width, int height,
-                           AVRational fps, int crf);
 
 }  // namespace sdfreel

@@ -1,5 +1,6 @@
 #pragma once
-// In-process video encoding with libav. Frames stream in as they finish; memory stays flat.
+// In-process video encoding with libav (in the video module, io/video_module.h). Frames stream in
+// as they finish; memory stays flat.
 #include <memory>
 #include <string>
 
@@ -8,7 +9,8 @@
 
 namespace sdfreel {
 
-struct EncodedAudio;  // io/audio_track.h
+struct EncodedAudio;   // io/audio_track.h
+class EncoderSession;  // io/video_module.h
 
 struct VideoSettings {
   std::string path;   // .mp4, .mkv, .mov, .webm; the container follows the path
@@ -28,8 +30,7 @@ class VideoEncoder {
   void finish();
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<EncoderSession> session_;
 };
 
 bool is_known_codec(const std::string& codec);

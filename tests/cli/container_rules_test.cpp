@@ -2,6 +2,11 @@
 // with what libav's muxers accept, so a timeline that passes validation never fails at encode.
 #include <gtest/gtest.h>
 
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+}
+
 #include "io/video_codecs.h"
 #include "timeline/rules.h"
 

@@ -242,6 +242,28 @@ TEST(Still, NeverLoadsOpenImageIO) {
   }
 }
 
+// libav's encoders are in sdfreel's video module (io/video_module.h): a run that writes no
+// video never loads them (127 libraries, 31 ms of each start); a render with a video does.
+TEST(Render, OpensTheVideoModuleOnlyForAVideo) {
+  const std::string dir = scratch_dir("video_module_libraries");
+  write_file(dir + "/t.toml", small_timeline(2));
+  for (const std::string args :
+       {"--version", "still t.toml --time 0.25 -o a.png", "render t.toml --no-video"}) {
+    const RunResult r = run_sdfreel(args, dir, "LD_DEBUG=files ");
+    ASSERT_EQ(r.status, 0) << args;
+    EXPECT_NE(r.err.find("libpng"), std::string::npos) << "LD_DEBUG reports libraries: " << args;
+    EXPECT_EQ(r.err.find("sdfreel_video_av"), std::string::npos) << args;
+    EXPECT_EQ(r.err.find("libavcodec"), std::string::npos) << args;
+    EXPECT_EQ(r.err.find("libavformat"), std::string::npos) << args;
+  }
+  const RunResult video = run_sdfreel("render t.toml", dir, "LD_DEBUG=files ");
+  ASSERT_EQ(video.status, 0) << video.err.substr(video.err.size() > 2000 ? video.err.size() - 2000
+                                                                         : 0);
+  EXPECT_NE(video.err.find("sdfreel_video_av.so"), std::string::npos);
+  EXPECT_NE(video.err.find("libavcodec"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir + "/out/small.mkv"));
+}
+
 TEST(Verify, PassesOnItsOwnRenderAndFailsOnADifferentFrame) {
   const std::string dir = scratch_dir("verify");
   write_file(dir + "/t.toml", small_timeline(3));

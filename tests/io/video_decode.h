@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/video_av.h"
+#include "plugins/video_av/video_av.h"
 
 namespace sdfreel::test {
 

@@ -1,4 +1,4 @@
-#include "io/video_sink.h"
+#include "plugins/video_av/video_sink.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-#include "io/video_av.h"
+#include "plugins/video_av/video_av.h"
 
 #include <stdexcept>
 

@@ -5,7 +5,7 @@
 // share a temporary file, and the last complete one wins the rename.
 #include <string>
 
-#include "io/video_av.h"
+#include "plugins/video_av/video_av.h"
 
 namespace sdfreel {
 

@@ -1,10 +1,10 @@
-#include "io/audio_source.h"
+#include "plugins/video_av/audio_source.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "io/video_av.h"
+#include "plugins/video_av/video_av.h"
 
 extern "C" {
 #include <libswresample/swresample.h>
