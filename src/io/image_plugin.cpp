@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "io/image_plugin_abi.h"
-#include "render/data_files.h"
+#include "io/module_open.h"
 
 namespace sdfreel {
 
@@ -27,27 +27,19 @@ const ImageModule& image_module() {
   static ImageModule module;
   static std::string problem;
   std::call_once(once, [] {
-    std::string tried;
-    for (const auto& path : module_file_candidates(SDFREEL_IMAGE_MODULE)) {
-      tried += (tried.empty() ? "" : ", ") + path.string();
-      void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (!handle) {
-        if (const char* e = dlerror();
-            e && std::string(e).find("No such file") == std::string::npos)
-          problem = std::string("cannot open sdfreel's image module: ") + e;
-        continue;
-      }
-      module.read = reinterpret_cast<SdfreelImageReadFn>(dlsym(handle, SDFREEL_IMAGE_READ));
-      module.free = reinterpret_cast<SdfreelImageFreeFn>(dlsym(handle, SDFREEL_IMAGE_FREE));
-      module.write = reinterpret_cast<SdfreelImageWriteFn>(dlsym(handle, SDFREEL_IMAGE_WRITE));
-      module.writes = reinterpret_cast<SdfreelImageWritesFn>(dlsym(handle, SDFREEL_IMAGE_WRITES));
-      if (module.read && module.free && module.write && module.writes) return;
-      module = {};
-      problem = path.string() + " is not sdfreel's image module of this version";
-    }
-    if (problem.empty())
-      problem = "sdfreel's image module " SDFREEL_IMAGE_MODULE " is not installed (tried " + tried +
-                "); reinstall sdfreel";
+    open_module(
+        SDFREEL_IMAGE_MODULE, "image",
+        [](void* handle) {
+          module.read = reinterpret_cast<SdfreelImageReadFn>(dlsym(handle, SDFREEL_IMAGE_READ));
+          module.free = reinterpret_cast<SdfreelImageFreeFn>(dlsym(handle, SDFREEL_IMAGE_FREE));
+          module.write = reinterpret_cast<SdfreelImageWriteFn>(dlsym(handle, SDFREEL_IMAGE_WRITE));
+          module.writes =
+              reinterpret_cast<SdfreelImageWritesFn>(dlsym(handle, SDFREEL_IMAGE_WRITES));
+          if (module.read && module.free && module.write && module.writes) return true;
+          module = {};
+          return false;
+        },
+        problem);
   });
   if (!module.read) throw std::runtime_error(problem);
   return module;

@@ -131,3 +131,17 @@ if (cd "$img" && "$tmp/prefix/bin/sdfreel" check t.toml 2>"$img.log"); then
 fi
 grep -q "image module" "$img.log" || fail "without lib/sdfreel: expected 'image module', got: $(cat "$img.log")"
 echo "image channel: read through the installed module; without it: $(grep -m 1 "image module" "$img.log")"
+
+# libav's encoders are the installed video module (lib/sdfreel): without it a render that writes
+# no video still works, and one with a video fails naming the module, before any frame.
+vid=$tmp/video-module
+mkdir "$vid"
+cp "$tmp/t.toml" "$vid/"
+(cd "$vid" && "$tmp/prefix/bin/sdfreel" render t.toml --no-video --out nv 2>"$vid.log") ||
+  fail "without lib/sdfreel a render with --no-video failed: $(tail -n 3 "$vid.log")"
+if (cd "$vid" && "$tmp/prefix/bin/sdfreel" render t.toml --out v 2>"$vid.log"); then
+  fail "without lib/sdfreel the installed binary still wrote a video"
+fi
+grep -q "video module" "$vid.log" || fail "without lib/sdfreel: expected 'video module', got: $(cat "$vid.log")"
+[ ! -e "$vid/v/frames/00000.png" ] || fail "without lib/sdfreel: frames were written before the failure"
+echo "video: without the module --no-video renders; a video fails: $(grep -m 1 "video module" "$vid.log")"
