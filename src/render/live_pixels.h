@@ -30,6 +30,9 @@ class LivePixels {
   bool live(size_t pixel) const { return live_[pixel] != 0; }
   // No pixel has stopped yet (fixed sampling, or before the first decision that stops one).
   bool all_live() const { return all_live_; }
+  // Whether decide() will be due again (never for fixed sampling): else the odd samples' sums,
+  // which only decisions read, need not be kept.
+  bool decides() const { return next_end_ < a_.maximum; }
   const std::vector<uint8_t>& mask() const { return live_; }
   const SampleCounts& counts() const { return taken_; }
 

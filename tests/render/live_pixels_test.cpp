@@ -92,5 +92,25 @@ TEST(LivePixels, DecisionsAreTheRuleAtAnyThreadCount) {
   EXPECT_GE(stopped_somewhere, 2);  // and pixels stopped in them
 }
 
+// decides(): whether a decision is still to come. Never for fixed sampling (the CPU then keeps
+// no sums of the odd samples, which only decisions read); for adaptive sampling until the round
+// that ends at the maximum, with a decision after each round before it.
+TEST(LivePixels, DecidesUntilTheLastRoundAndNeverForFixedSampling) {
+  EXPECT_FALSE(LivePixels(AdaptiveSampling{false, 4, 4, 0.0f}, W, H, 1).decides());
+  EXPECT_FALSE(LivePixels(AdaptiveSampling{true, 8, 8, 0.02f}, W, H, 1).decides());
+  const AdaptiveSampling a{true, 2, 16, 0.0f};  // threshold 0: no pixel ever stops
+  LivePixels live(a, W, H, 2);
+  ImageRGBA sum(W, H), odd(W, H);
+  int decisions = 0;
+  for (int taken = 0; taken < a.maximum; taken = live.round_end()) {
+    ASSERT_TRUE(live.decides()) << "taken " << taken;
+    ASSERT_EQ(live.decide(live.round_end(), sum, odd), W * H);
+    ++decisions;
+  }
+  EXPECT_FALSE(live.decides());
+  EXPECT_EQ(live.round_end(), a.maximum);
+  EXPECT_GE(decisions, 2);
+}
+
 }  // namespace
 }  // namespace sdfreel

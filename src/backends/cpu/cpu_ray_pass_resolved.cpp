@@ -24,7 +24,7 @@ namespace {
 constexpr int CHUNK_PAIRS = 512;
 
 struct Sums {
-  ImageRGBA all, odd;      // all samples; those at odd list positions
+  ImageRGBA all, odd;      // all samples; those at odd list positions (empty: not kept)
   float* evals = nullptr;  // SDF evaluations of all samples, a value a pixel; null: none
 };
 
@@ -63,7 +63,7 @@ void trace_pairs(const RayPass& pass, const CpuPassContext& pc, const RoundPairs
       s[1] += c.y;
       s[2] += c.z;
       if (sums.evals && result.keep[i]) sums.evals[pixel] += float(result.evals[i]);
-      if (pairs.sample(base + i) & 1) {
+      if ((pairs.sample(base + i) & 1) && !sums.odd.pixels.empty()) {
         float* o = &sums.odd.pixels[size_t(pixel) * 4];
         o[0] += c.x;
         o[1] += c.y;
@@ -114,19 +114,22 @@ ImageRGBA run_ray_pass_resolved(const RayPass& pass, const CpuPassContext& pc,
                                 std::vector<float>* evals) {
   const FrameContext& f = pc.frame;
   const AdaptiveSampling a = sampling_of(f);
-  // Tens of megabytes of fresh, zeroed memory: each buffer filled on a thread of its own.
+  LivePixels live(a, f.width, f.height, pc.threads);
+  // Tens of megabytes of fresh, zeroed memory: each buffer filled on a thread of its own; the odd
+  // samples' sums only when a decision will read them (adaptive sampling).
   Sums sums;
   std::vector<int> order;
   with_threads(pc.threads, [&] {
     tbb::parallel_invoke([&] { sums.all = ImageRGBA(f.width, f.height); },
-                         [&] { sums.odd = ImageRGBA(f.width, f.height); },
+                         [&] {
+                           if (live.decides()) sums.odd = ImageRGBA(f.width, f.height);
+                         },
                          [&] { order = pixels_by_tile(f.width, f.height, pc.tile_size); });
   });
   if (evals) {
     evals->assign(size_t(f.width) * f.height, 0.0f);
     if (!pass.sdf_evals.empty()) sums.evals = evals->data();
   }
-  LivePixels live(a, f.width, f.height, pc.threads);
   for (int from = 0;;) {
     const int to = live.round_end();
     run_round(pass, pc, order, live, from, to, glm::vec3(clear), sums, stats);

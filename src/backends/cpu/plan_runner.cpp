@@ -90,8 +90,10 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
   targets.clear();
   if (!evals_are_read(plan, evals)) targets.skip_per_sample_clear(SDF_EVALS_TARGET);
   for (const Pass& pass : plan.setup_passes) run_pass(pass, pc, targets, stats);
-  ImageRGBA sum(ctx.width, ctx.height), sum_odd(ctx.width, ctx.height);
   LivePixels live(sampling_of(ctx), ctx.width, ctx.height, s.threads);
+  // The odd samples' sum only when a decision will read it (adaptive sampling).
+  ImageRGBA sum(ctx.width, ctx.height), sum_odd;
+  if (live.decides()) sum_odd = ImageRGBA(ctx.width, ctx.height);
   std::vector<MeshPassCache> caches(plan.passes.size());  // one per pass, for the frame
   if (evals) evals->assign(size_t(ctx.width) * ctx.height, 0.0f);
   for (int i = 0; i < int(ctx.sample_offsets.size()); ++i) {
@@ -101,7 +103,7 @@ ImageRGBA run_plan_cpu(const FramePlan& plan, const FrameContext& ctx, const Cpu
     for (size_t p = 0; p < plan.passes.size(); ++p)
       run_pass(plan.passes[p], pc, targets, stats, &caches[p]);
     const ImageRGBA& colour = targets.get(COLOUR_TARGET, "resolve");
-    add_live(colour, live, sum, (i & 1) ? &sum_odd : nullptr, s.threads);
+    add_live(colour, live, sum, (i & 1) && !sum_odd.pixels.empty() ? &sum_odd : nullptr, s.threads);
     if (evals) {
       const ImageRGBA& e = targets.get(SDF_EVALS_TARGET, "resolve");
       for_each_range(evals->size(), kPixelsPerTask, s.threads, [&](size_t begin, size_t end) {
