@@ -22,7 +22,9 @@ class BitWriter {
       filled_ -= 32;
     }
   }
-  // put() of table[data[i]] for each byte: each entry a code with its length times 65536 added.
+  // A code with its length times 65536 added (deflate_trees.h's BlockCodes entries).
+  void put_symbol(uint32_t symbol) { put(symbol & 0xffff, int(symbol >> 16)); }
+  // put_symbol(table[data[i]]) for each byte.
   void put_each(const uint8_t* data, size_t size, const uint32_t table[256]);
   void align();                                  // zero bits up to the next byte boundary
   void byte(uint8_t b) { bytes_[used_++] = b; }  // only when aligned

@@ -25,20 +25,30 @@ uint32_t reversed(uint32_t code, int length) {
   return r;
 }
 
+// The canonical codes of symbols [0, last] from their lengths (RFC 1951 3.2.2, zlib's
+// gen_codes), as BlockCodes holds them; `count[b]` is how many symbols are b bits long.
+template <typename Length>
+void canonical_codes(const uint16_t count[MAX_BITS + 1], const Length* lengths, int last,
+                     uint32_t* symbol) {
+  uint16_t next[MAX_BITS + 1] = {};
+  for (int bits = 1, code = 0; bits <= MAX_BITS; ++bits)
+    next[bits] = uint16_t(code = (code + count[bits - 1]) << 1);
+  for (int n = 0; n <= last; ++n)
+    if (const int length = lengths[n]; length != 0)
+      symbol[n] = reversed(next[length]++, length) | uint32_t(length) << 16;
+}
+
 // The fixed code of RFC 1951 3.2.6 (zlib's static_ltree and static_dtree).
 struct StaticCodes {
   uint8_t lengths[288], distance_lengths[DISTANCE_CODES];
-  uint16_t codes[288];
+  BlockCodes codes;
   StaticCodes() {
     uint16_t count[MAX_BITS + 1] = {};
     for (int n = 0; n < 288; ++n) {
       lengths[n] = n < 144 ? 8 : n < 256 ? 9 : n < 280 ? 7 : 8;
       ++count[lengths[n]];
     }
-    uint16_t next[MAX_BITS + 1] = {};
-    for (int bits = 1, code = 0; bits <= MAX_BITS; ++bits)
-      next[bits] = uint16_t(code = (code + count[bits - 1]) << 1);
-    for (int n = 0; n < 288; ++n) codes[n] = uint16_t(reversed(next[lengths[n]]++, lengths[n]));
+    canonical_codes(count, lengths, 287, codes.symbol);
     std::memset(distance_lengths, 5, sizeof distance_lengths);
   }
 };
@@ -58,7 +68,8 @@ struct TreeKind {
 // read only where zlib reads the member last written).
 struct Tree {
   uint32_t freq[HEAP_SIZE] = {};
-  uint16_t len[HEAP_SIZE] = {}, dad[HEAP_SIZE] = {}, code[HEAP_SIZE] = {};
+  uint16_t len[HEAP_SIZE] = {}, dad[HEAP_SIZE] = {};
+  uint32_t code[HEAP_SIZE] = {};  // as BlockCodes holds them
   int max_code = -1;
 };
 
@@ -141,14 +152,6 @@ struct State {
     }
   }
 
-  void gen_codes(Tree& t) const {
-    uint16_t next[MAX_BITS + 1] = {};
-    for (int bits = 1, code = 0; bits <= MAX_BITS; ++bits)
-      next[bits] = uint16_t(code = (code + bl_count[bits - 1]) << 1);
-    for (int n = 0; n <= t.max_code; ++n)
-      if (t.len[n] != 0) t.code[n] = uint16_t(reversed(next[t.len[n]]++, t.len[n]));
-  }
-
   void build_tree(Tree& t, const TreeKind& kind) {
     heap_len = 0, heap_max = HEAP_SIZE;
     int max_code = -1;
@@ -187,7 +190,7 @@ struct State {
     } while (heap_len >= 2);
     heap[--heap_max] = node_of(queue[1]);
     gen_bitlen(t, kind);
-    gen_codes(t);
+    canonical_codes(bl_count, t.len, t.max_code, t.code);
   }
 
   // The code lengths' run-length symbols, counted (zlib's scan_tree) or sent (send_tree).
@@ -228,7 +231,7 @@ struct State {
 
   void send_tree(BitWriter& out, Tree& t) {
     runs(t, t.max_code, [&](int s, int repeat) {
-      out.put(bl_tree.code[s], bl_tree.len[s]);
+      out.put_symbol(bl_tree.code[s]);
       if (s == REP_3_6) out.put(uint32_t(repeat), 2);
       if (s == REPZ_3_10) out.put(uint32_t(repeat), 3);
       if (s == REPZ_11_138) out.put(uint32_t(repeat), 7);
@@ -274,8 +277,7 @@ bool start_block(BitWriter& out, const uint32_t counts[256], const uint8_t* data
   }
   if (static_lenb == opt_lenb) {
     out.put((STATIC_TREES << 1) + last, 3);
-    std::memcpy(codes.codes, fixed.codes, sizeof codes.codes);
-    std::memcpy(codes.lengths, fixed.lengths, sizeof codes.lengths);
+    codes = fixed.codes;
     return true;
   }
   out.put((DYN_TREES << 1) + last, 3);
@@ -286,10 +288,8 @@ bool start_block(BitWriter& out, const uint32_t counts[256], const uint8_t* data
   for (int rank = 0; rank <= max_blindex; ++rank) out.put(s.bl_tree.len[BL_ORDER[rank]], 3);
   s.send_tree(out, literals);
   s.send_tree(out, distances);
-  for (int n = 0; n < 288; ++n) {  // past max_code: unused (send_tree's guard is there)
-    codes.codes[n] = n <= literals.max_code ? literals.code[n] : 0;
-    codes.lengths[n] = n <= literals.max_code ? uint8_t(literals.len[n]) : 0;
-  }
+  for (int n = 0; n < 288; ++n)  // past max_code: unused
+    codes.symbol[n] = n <= literals.max_code ? literals.code[n] : 0;
   return true;
 }
 

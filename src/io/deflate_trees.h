@@ -14,15 +14,15 @@ namespace sdfreel::deflate {
 constexpr int LITERAL_CODES = 286, DISTANCE_CODES = 30, LENGTH_CODES = 19;
 constexpr int END_OF_BLOCK = 256;
 
-// A block's codes: `lengths[s]` bits (0: unused), `codes[s]` already bit-reversed for put().
+// A block's code of each symbol as BitWriter::put_each takes it: the code, bit-reversed for a
+// writer that starts at the least significant bit, plus its length times 65536 (0: unused).
 struct BlockCodes {
-  uint16_t codes[288];
-  uint8_t lengths[288];
+  uint32_t symbol[288];
 };
 
 // Codes one block of literals (a deflate block with no matches) as zlib's _tr_flush_block would:
 // `counts` is how often each byte value occurs in `data`; `last` marks the stream's final block.
-// The block's literals are then written with `codes` (of BlockCodes) by the caller, so the hot
+// The block's literals are then written with `codes` by the caller, so the hot
 // loop stays outside; returns false when the block went out stored (its bytes already written).
 bool start_block(BitWriter& out, const uint32_t counts[256], const uint8_t* data, size_t size,
                  bool last, BlockCodes& codes);

@@ -45,10 +45,8 @@ std::vector<uint8_t> zlib_huffman_only(const uint8_t* data, size_t size, int win
     deflate::BlockCodes codes;
     if (deflate::start_block(out, counts, data + at, n, last, codes)) {
       out.room(2 * n + 8);  // at most 15 bits a literal
-      uint32_t table[256];
-      for (int v = 0; v < 256; ++v) table[v] = codes.codes[v] | uint32_t(codes.lengths[v]) << 16;
-      out.put_each(data + at, n, table);
-      out.put(codes.codes[deflate::END_OF_BLOCK], codes.lengths[deflate::END_OF_BLOCK]);
+      out.put_each(data + at, n, codes.symbol);
+      out.put_symbol(codes.symbol[deflate::END_OF_BLOCK]);
     }
     at += n;
     if (last) break;

@@ -8,11 +8,17 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/png_file.h"
+
 namespace sdfreel {
 
-// Like encode_png(width, height, channels, bit_depth, samples, {1, PNG_FILTER_PAETH,
-// Z_HUFFMAN_ONLY}) of io/png_file.h: `channels` 1 to 4, `bit_depth` 8 (uint8_t samples) or 16
-// (uint16_t samples in host order). Throws std::runtime_error on a bad size.
+// The libpng setting whose bytes this coder writes: zlib level 1, PNG_FILTER_PAETH (0x80),
+// Z_HUFFMAN_ONLY (2).
+constexpr PngCompression PAETH_HUFFMAN_ONLY{1, 0x80, 2};
+
+// encode_png(width, height, channels, bit_depth, samples, PAETH_HUFFMAN_ONLY)'s bytes: `channels` 1
+// to 4, `bit_depth` 8 (uint8_t samples) or 16 (uint16_t samples in host order). Throws
+// std::runtime_error on a bad size.
 std::vector<unsigned char> encode_png_paeth_huffman(int width, int height, int channels,
                                                     int bit_depth, const void* samples);
 

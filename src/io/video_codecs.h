@@ -22,7 +22,8 @@ struct VideoCodecSpec {
 const VideoCodecSpec* find_video_codec(const std::string& name);  // nullptr when unknown
 std::string known_video_codecs();                                 // "h264, ..., prores"
 // "" when this machine's libav has the codec's encoder; else what is missing, for the user. A
-// known codec's check opens the video module (io/video_module.h).
+// known codec's check opens the video module (io/video_module.h), so it is defined beside the
+// encoder's face in video_encoder.cpp: this file's table is compiled into the module too.
 std::string missing_video_encoder(const std::string& codec);
 
 }  // namespace sdfreel

@@ -4,7 +4,8 @@
 // file writing. A render without a video never needs them: they live in a module of sdfreel's
 // own, lib/sdfreel/sdfreel_video_av.so (src/plugins/video_av/), opened with dlopen the first time
 // a video or a soundtrack is encoded or its encoder is checked. io/video_encoder.h,
-// io/video_codecs.h and io/audio_track.h call through it; nothing else does.
+// io/video_codecs.h, io/audio_track.h and the soundtrack's check (cli/soundtrack.cpp) call
+// through it; nothing else does.
 #include <cstddef>
 #include <memory>
 #include <string>

@@ -72,7 +72,10 @@ TEST(HuffmanDeflate, CodesLongerThanFifteenBitsAreCutAsZlibCutsThem) {
 }
 
 std::vector<unsigned char> libpng_itself(int w, int h, int channels, int depth, const void* px) {
-  return encode_png(w, h, channels, depth, px, PngCompression{1, PNG_FILTER_PAETH, Z_HUFFMAN_ONLY});
+  static_assert(PAETH_HUFFMAN_ONLY.zlib_level == 1 &&
+                PAETH_HUFFMAN_ONLY.filter == PNG_FILTER_PAETH &&
+                PAETH_HUFFMAN_ONLY.strategy == Z_HUFFMAN_ONLY);
+  return encode_png(w, h, channels, depth, px, PAETH_HUFFMAN_ONLY);
 }
 
 TEST(PngFrames, LibpngsBytesForEveryShape) {
