@@ -13,28 +13,12 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "io/exr_memory_stream.h"
+#include "io/exr_piz_file.h"
+
 namespace sdfreel {
 
 namespace {
-
-// An Imf::OStream into a byte vector: frames are encoded in memory, then written by
-// write_file_atomic, which checks every write (a full disk never publishes a short frame).
-class MemoryStream : public Imf::OStream {
- public:
-  MemoryStream() : Imf::OStream("memory") {}
-  void write(const char c[], int n) override {
-    if (pos_ + size_t(n) > bytes_.size()) bytes_.resize(pos_ + size_t(n));
-    std::copy(c, c + n, bytes_.begin() + std::ptrdiff_t(pos_));
-    pos_ += size_t(n);
-  }
-  uint64_t tellp() override { return pos_; }
-  void seekp(uint64_t pos) override { pos_ = size_t(pos); }
-  std::vector<char> take() { return std::move(bytes_); }
-
- private:
-  std::vector<char> bytes_;
-  size_t pos_ = 0;
-};
 
 constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
 
@@ -95,7 +79,8 @@ std::vector<char> encode_exr(const ImageRGBA& linear,
                                               n * sizeof(float), n * sizeof(float) * p.width));
     }
   }
-  MemoryStream stream;
+  if (header.compression() == Imf::PIZ_COMPRESSION) return encode_piz_exr(header, buffer);
+  ExrMemoryStream stream;
   {
     Imf::OutputFile file(stream, header);
     file.setFrameBuffer(buffer);

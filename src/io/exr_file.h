@@ -1,6 +1,7 @@
 #pragma once
 // RGBA EXR files (half or float) through OpenEXR itself (not OpenImageIO, whose start-up costs half
-// a second: see png_file.h).
+// a second: see png_file.h); PIZ files, the default, with their chunks coded by sdfreel on all
+// threads and OpenEXR's bytes (io/exr_piz_file.h).
 #include <map>
 #include <string>
 #include <vector>
