@@ -56,18 +56,20 @@ std::vector<char> encode_exr(const ImageRGBA& linear,
   Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65
   for (const auto& [key, value] : metadata)
     header.insert("sdfreel:" + key, Imf::StringAttribute(value));
-  // OpenEXR writes a half channel from half data only: round here (Imath, nearest even).
+  // Half channels round the floats (Imath, nearest even): sdfreel's PIZ coder as it gathers each
+  // chunk, on all threads; for OpenEXR's coders, here.
+  const bool piz = header.compression() == Imf::PIZ_COMPRESSION;
   std::vector<Imath::half> halves;
-  if (!settings.full_float) halves.assign(linear.pixels.begin(), linear.pixels.end());
+  if (!settings.full_float && !piz) halves.assign(linear.pixels.begin(), linear.pixels.end());
   const Imf::PixelType type = settings.full_float ? Imf::FLOAT : Imf::HALF;
-  char* base = settings.full_float
-                   ? reinterpret_cast<char*>(const_cast<float*>(linear.pixels.data()))
-                   : reinterpret_cast<char*>(halves.data());
-  const size_t sample = settings.full_float ? sizeof(float) : sizeof(Imath::half);
+  const Imf::PixelType given = halves.empty() ? Imf::FLOAT : Imf::HALF;
+  char* base = halves.empty() ? reinterpret_cast<char*>(const_cast<float*>(linear.pixels.data()))
+                              : reinterpret_cast<char*>(halves.data());
+  const size_t sample = halves.empty() ? sizeof(float) : sizeof(Imath::half);
   Imf::FrameBuffer buffer;
   for (int c = 0; c < 4; ++c) {
     header.channels().insert(kChannels[c], Imf::Channel(type));
-    buffer.insert(kChannels[c], Imf::Slice(type, base + c * sample, 4 * sample,
+    buffer.insert(kChannels[c], Imf::Slice(given, base + c * sample, 4 * sample,
                                            4 * sample * size_t(linear.width)));
   }
   for (const PassImage& p : passes) {
@@ -79,7 +81,7 @@ std::vector<char> encode_exr(const ImageRGBA& linear,
                                               n * sizeof(float), n * sizeof(float) * p.width));
     }
   }
-  if (header.compression() == Imf::PIZ_COMPRESSION) return encode_piz_exr(header, buffer);
+  if (piz) return encode_piz_exr(header, buffer);
   ExrMemoryStream stream;
   {
     Imf::OutputFile file(stream, header);

@@ -1,5 +1,6 @@
 #include "io/exr_piz_file.h"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <tbb/parallel_for.h>
@@ -24,18 +25,25 @@ struct ChannelSource {
   const char* base = nullptr;  // null: zeros
   size_t x_stride = 0, y_stride = 0;
   int words = 1;
+  bool float_to_half = false;  // a float slice of a half channel: rounded here by Imath
   void copy_row(int y, int min_x, int nx, uint16_t* to) const {
-    const size_t bytes = size_t(words) * sizeof(uint16_t);
     if (!base) {
-      std::memset(to, 0, bytes * size_t(nx));
+      std::memset(to, 0, size_t(words) * sizeof(uint16_t) * size_t(nx));
       return;
     }
     const char* from =
         base + intptr_t(y) * intptr_t(y_stride) + intptr_t(min_x) * intptr_t(x_stride);
-    if (words == 1)  // a constant size, so the copies are loads and stores, not calls
+    if (float_to_half) {
+      for (int x = 0; x < nx; ++x, from += x_stride) {
+        float f;
+        std::memcpy(&f, from, sizeof f);
+        to[x] = Imath::half(f).bits();
+      }
+    } else if (words == 1) {  // a constant size, so the copies are loads and stores, not calls
       for (int x = 0; x < nx; ++x, from += x_stride) std::memcpy(to + x, from, 2);
-    else
+    } else {
       for (int x = 0; x < nx; ++x, from += x_stride) std::memcpy(to + 2 * x, from, 4);
+    }
   }
 };
 
@@ -48,7 +56,9 @@ std::vector<ChannelSource> channel_sources(const Imf::Header& header,
     ChannelSource s;
     s.words = c.channel().type == Imf::HALF ? 1 : 2;
     if (const Imf::Slice* slice = frame.findSlice(c.name())) {
-      if (slice->type != c.channel().type || slice->xSampling != 1 || slice->ySampling != 1)
+      s.float_to_half = slice->type == Imf::FLOAT && c.channel().type == Imf::HALF;
+      if ((slice->type != c.channel().type && !s.float_to_half) || slice->xSampling != 1 ||
+          slice->ySampling != 1)
         throw std::logic_error("encode_piz_exr: slice " + std::string(c.name()) +
                                " differs from its channel");
       s.base = slice->base;

@@ -12,7 +12,8 @@
 namespace sdfreel {
 
 // The file of `header` (PIZ, scanlines, increasing y, sampling 1) with `frame`'s pixels: each
-// channel's slice of the channel's own type; a channel without a slice is zeros.
+// channel's slice of the channel's own type, or float for a half channel (rounded to nearest even
+// by Imath: the file OpenEXR writes from those halves); a channel without a slice is zeros.
 std::vector<char> encode_piz_exr(const Imf::Header& header, const Imf::FrameBuffer& frame);
 
 }  // namespace sdfreel

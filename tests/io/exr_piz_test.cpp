@@ -173,6 +173,35 @@ TEST(ExrPizFile, OpenExrsBytesForEveryShapeAndContent) {
       40, 33, 2, [&](int, int, int) { return float(rng()) * 1e-3f; }, "noisy float channels");
 }
 
+TEST(ExrPizFile, FloatSlicesOfHalfChannelsAreTheFileOfTheirRoundedHalves) {
+  // encode_exr hands the frame's floats to half channels and each chunk rounds its own: the file
+  // OpenEXR writes from the halves Imath rounds (OpenEXR takes no float slice for a half channel).
+  std::mt19937 rng(4);
+  std::vector<float> rgba(size_t(70 * 45 * 4));
+  for (float& v : rgba) v = std::ldexp(float(rng() % 100000) / 1e5f, int(rng() % 20) - 10);
+  const std::vector<Imath::half> halves(rgba.begin(), rgba.end());
+  Imf::Header header(70, 45);
+  header.compression() = Imf::PIZ_COMPRESSION;
+  Imf::FrameBuffer floats, rounded;
+  const char* names[4] = {"R", "G", "B", "A"};
+  for (int c = 0; c < 4; ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::HALF));
+    floats.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(rgba.data() + c),
+                                       4 * sizeof(float), 4 * sizeof(float) * 70));
+    rounded.insert(
+        names[c],
+        Imf::Slice(Imf::HALF, reinterpret_cast<char*>(const_cast<Imath::half*>(halves.data() + c)),
+                   4 * sizeof(Imath::half), 4 * sizeof(Imath::half) * 70));
+  }
+  ExrMemoryStream stream;
+  {
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(rounded);
+    file.writePixels(45);
+  }
+  EXPECT_EQ(encode_piz_exr(header, floats), stream.take());
+}
+
 TEST(ExrPizFile, FloatOnlyFilesToo) {
   TestImage t = make_image(50, 40, 4, [](int x, int y, int c) { return float(x * y + c) / 7.0f; });
   // Only the float channels: the compressor's XDR layout instead of the native one.

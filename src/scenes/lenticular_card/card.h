@@ -29,12 +29,15 @@ struct CardUniforms {
   float hit_id_base = 0.0f;  // added to those ids (a host scene keeps its own ids apart)
 };
 
-// The textures the card reads: the interlaced prints (linear albedo) and the ridge normal map;
-// optionally the prints strip by strip (textures.h, by_strip), read instead: the same texels.
+struct StripPrint;  // textures.h
+
+// The textures the card reads: the interlaced prints (linear albedo) and the ridge normal map.
+// The prints strip by strip (textures.h, StripPrint) when given, else as plain float texels
+// (print_texture, as GL reads them): the same texels.
 struct CardTextures {
-  const Texture* print = nullptr;
+  const StripPrint* print = nullptr;
   const Texture* ridges = nullptr;
-  const Texture* print_by_strip = nullptr;
+  const Texture* plain_print = nullptr;  // read when `print` is null
 };
 
 // The world ray in the local frame: origin and direction times world_to_local, sums written out

@@ -7,6 +7,7 @@
 
 #include "scenes/common/texture.h"
 #include "scenes/lenticular_card/card.h"
+#include "scenes/lenticular_card/textures.h"
 #include "sdf/det_math.h"
 #include "sdf/lanes.h"
 #include "sdf/lanes_exp_log.h"
@@ -35,12 +36,10 @@ inline glm::vec3 ridge_tilt(float lens_coord, float across, float y, const CardU
   return glm::vec3(across * RIDGE_SLOPE + n.x * u.ridge_noise, n.y * u.ridge_noise, 1.0f);
 }
 
-// texelFetchRepeat(*tex.print, column, row), through tex.print_by_strip when there is one.
-inline glm::vec4 print_texel(const CardTextures& tex, int views, float column, float row) {
-  if (!tex.print_by_strip) return texelFetchRepeat(*tex.print, column, row);
-  const int x = wrap_texel(column, tex.print->width), y = wrap_texel(row, tex.print->height);
-  const float* c = tex.print_by_strip->at(x / views, (x % views) * tex.print->height + y);
-  return glm::vec4(c[0], c[1], c[2], c[3]);
+// texelFetchRepeat(print, column, row), through the strips when there are.
+inline glm::vec4 print_texel(const CardTextures& tex, float column, float row) {
+  if (!tex.print) return texelFetchRepeat(*tex.plain_print, column, row);
+  return tex.print->texel(wrap_texel(column, tex.print->width), wrap_texel(row, tex.print->height));
 }
 
 // The print's albedo and the sheet's tilted normal (before normalising) at a point of the face:
@@ -48,7 +47,7 @@ inline glm::vec4 print_texel(const CardTextures& tex, int views, float column, f
 inline void face_texels(const CardTextures& tex, const CardUniforms& u, float column, float row,
                         float lens_coord, float across, float y, glm::vec3& albedo,
                         glm::vec3& tilt) {
-  albedo = glm::vec3(print_texel(tex, u.views, column, row));
+  albedo = glm::vec3(print_texel(tex, column, row));
   tilt = ridge_tilt(lens_coord, across, y, u, tex);
 }
 inline void face_texels(const CardTextures& tex, const CardUniforms& u, F8 column, F8 row,

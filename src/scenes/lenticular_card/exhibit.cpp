@@ -68,12 +68,12 @@ RayPass card_ray_pass(const FramePlan& plan, const glm::mat4& model, const CardP
       make_camera_model(ctx.camera, ctx.width, ctx.height, plan.near_plane, plan.far_plane);
   const glm::vec3 forward = ctx.camera.forward;
   // The lambdas own what they read: the textures outlive the plan's scene.
-  const std::shared_ptr<const Texture> print = prints.print, ridges = prints.ridges,
-                                       by_strip = prints.print_by_strip;
-  auto shade = [u, cam, forward, print, ridges, by_strip](const Ray& ray, glm::vec3& colour,
-                                                          float& depth, bool& keep) {
+  const std::shared_ptr<const StripPrint> print = prints.print;
+  const std::shared_ptr<const Texture> ridges = prints.ridges;
+  auto shade = [u, cam, forward, print, ridges](const Ray& ray, glm::vec3& colour, float& depth,
+                                                bool& keep) {
     float t = 0.0f;
-    keep = shadeCard(ray, u, CardTextures{print.get(), ridges.get(), by_strip.get()}, colour, t);
+    keep = shadeCard(ray, u, CardTextures{print.get(), ridges.get()}, colour, t);
     if (keep) depth = hit_depth(cam, forward, ray.dir, t);
   };
   RayPass pass;
@@ -85,8 +85,8 @@ RayPass card_ray_pass(const FramePlan& plan, const glm::mat4& model, const CardP
   pass.scalar = [shade](const Ray& ray, glm::vec3& colour, float& depth, bool& keep, RayStats&) {
     shade(ray, colour, depth, keep);
   };
-  pass.packet = [shade, u, cam, forward, print, ridges, by_strip](const RayPacket& rays,
-                                                                  RayPassOutput& out, RayStats&) {
+  pass.packet = [shade, u, cam, forward, print, ridges](const RayPacket& rays, RayPassOutput& out,
+                                                        RayStats&) {
     const M8 maybe = may_hit_card(rays, u);
     if (u.hit_mask || u.surface != SURFACE_COLOUR) {  // ids and surfaces: one ray at a time
       for (int i = 0; i < rays.count; ++i)
@@ -100,8 +100,7 @@ RayPass card_ray_pass(const FramePlan& plan, const glm::mat4& model, const CardP
     V3x8 colour;
     F8 t;
     if (any(maybe))
-      hit &= shadeCard_lanes(rays, u, CardTextures{print.get(), ridges.get(), by_strip.get()},
-                             colour, t);
+      hit &= shadeCard_lanes(rays, u, CardTextures{print.get(), ridges.get()}, colour, t);
     for (int i = 0; i < rays.count; ++i) {
       out.keep[i] = lane(hit, i);
       if (!out.keep[i]) continue;

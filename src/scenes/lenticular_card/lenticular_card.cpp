@@ -52,10 +52,7 @@ class LenticularCardScene : public Scene {
     // The plan's two passes in one: the card (nearer than anything of the backdrop) over it.
     glm::vec3 colour;
     float t;
-    if (shadeCard(ray, card_,
-                  CardTextures{prints_->print.get(), prints_->ridges.get(),
-                               prints_->print_by_strip.get()},
-                  colour, t))
+    if (shadeCard(ray, card_, CardTextures{prints_->print.get(), prints_->ridges.get()}, colour, t))
       return colour;
     return backdrop(ray, light_, card_.hit_mask, card_.surface);
   }

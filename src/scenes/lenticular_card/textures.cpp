@@ -30,11 +30,13 @@ InterlaceLayout card_layout(int views) {
   return InterlaceLayout{views, double(views), false};
 }
 
-Texture by_strip(const Texture& print, int views) {
-  Texture t(print.width / views, print.height * views, print.channels);
+Texture print_texture(const StripPrint& print) {
+  Texture t(print.width, print.height, 4);
   tbb::parallel_for(0, print.height, [&](int y) {
-    for (int x = 0; x < print.width; ++x)
-      std::copy_n(print.at(x, y), print.channels, t.at(x / views, (x % views) * print.height + y));
+    for (int x = 0; x < print.width; ++x) {
+      const glm::vec4 c = print.texel(x, y);
+      std::copy_n(&c.x, 4, t.at(x, y));
+    }
   });
   return t;
 }
@@ -47,14 +49,17 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
   tbb::parallel_invoke([&] { pa = interlace(a, layout); }, [&] { pb = interlace(b, layout); });
   if (pa.width != pb.width || pa.height != pb.height)
     throw std::invalid_argument("lenticular_card: the two prints differ in size");
-  float decode[256];
-  for (int i = 0; i < 256; ++i) decode[i] = srgb_to_linear(float(i) / 255.0f) * PRINT_REFLECTANCE;
+  auto print = std::make_shared<StripPrint>();
+  print->width = pa.width;
+  print->height = pa.height * 2;
+  print->views = int(a.size());
+  for (int i = 0; i < 256; ++i)
+    print->decode[size_t(i)] = srgb_to_linear(float(i) / 255.0f) * PRINT_REFLECTANCE;
   CardPrints out;
   out.lenses = a[0].width;
   out.views = int(a.size());
   out.view_height = a[0].height;
   // The print's bytes, a over b, name its texels; the textures fill on threads of their own.
-  auto print = std::make_shared<Texture>();
   tbb::parallel_invoke(
       [&] {
         std::vector<uint8_t> bytes(pa.rgb);
@@ -63,17 +68,20 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
       },
       [&] { out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED)); },
       [&] {
-        *print = Texture(pa.width, pa.height * 2, 4);
-        tbb::parallel_for(0, print->height, [&](int y) {
+        StripPrint& p = *print;
+        p.rgb.resize(size_t(p.width) * size_t(p.height) * 3);
+        const size_t strip_width = size_t(p.width / p.views);
+        tbb::parallel_for(0, p.height, [&](int y) {
           const Rgb8Image& src = y < pa.height ? pa : pb;
-          const uint8_t* p = src.at(0, y % pa.height);
-          float* t = print->at(0, y);
-          for (int x = 0; x < print->width; ++x, p += 3, t += 4)
-            t[0] = decode[p[0]], t[1] = decode[p[1]], t[2] = decode[p[2]], t[3] = 1.0f;
+          const uint8_t* from = src.at(0, y % pa.height);
+          for (int x = 0; x < p.width; ++x, from += 3) {
+            const size_t i = (size_t(x % p.views) * size_t(p.height) + size_t(y)) * strip_width +
+                             size_t(x / p.views);
+            std::copy_n(from, 3, &p.rgb[3 * i]);
+          }
         });
       });
   out.print = print;
-  out.print_by_strip = std::make_shared<Texture>(by_strip(*print, out.views));
   return out;
 }
 
@@ -110,7 +118,8 @@ Texture make_ridge_map(int n, uint32_t seed) {
 }
 
 std::vector<ShaderTexture> card_shader_textures(const CardPrints& prints) {
-  return {as_shader("u_card_print", *prints.print), as_shader("u_card_ridges", *prints.ridges)};
+  return {as_shader("u_card_print", print_texture(*prints.print)),
+          as_shader("u_card_ridges", *prints.ridges)};
 }
 
 }  // namespace sdfreel::lenticular_card

@@ -36,6 +36,7 @@ glm::vec3 direction(std::mt19937& rng, const glm::vec3& from, const glm::vec3& a
 TEST(CardLanes, EachLaneIsShadeCardsRay) {
   std::mt19937 rng(29);
   const CardPrints prints = random_prints(rng, 6, 11, 7);
+  const Texture plain = print_texture(*prints.print);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   const glm::mat4 turned =
       glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, 0.9f, -2.0f}), 0.7f,
@@ -46,8 +47,8 @@ TEST(CardLanes, EachLaneIsShadeCardsRay) {
     for (const bool strips : {false, true})
       for (double time : {0.0, 4.4, 1e6}) {
         const CardUniforms u = card_uniforms(model, prints, CardLook{}, time);
-        const CardTextures tex{prints.print.get(), prints.ridges.get(),
-                               strips ? prints.print_by_strip.get() : nullptr};
+        const CardTextures tex = strips ? CardTextures{prints.print.get(), prints.ridges.get()}
+                                        : CardTextures{nullptr, prints.ridges.get(), &plain};
         for (int p = 0; p < 600; ++p, ++packets) {
           // One eye a packet (primary rays share it); eight targets on or around the card.
           const glm::vec3 eye_local(unit(rng) * 1.5f, 0.3f + unit(rng), unit(rng) * 1.5f);

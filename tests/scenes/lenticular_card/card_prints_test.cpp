@@ -1,6 +1,6 @@
 // make_card_prints, which fills its textures on several threads, against its definition written
-// out plainly: every texel of the print is its interlaced byte decoded, the strip copy holds the
-// same texels where by_strip puts them, and the key is the checksum of the print's bytes, a over b.
+// out plainly: every texel of the print is its interlaced byte decoded, read through the strips or
+// as GL's float texels, and the key is the checksum of the print's bytes, a over b.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -24,7 +24,7 @@ TEST(CardPrints, TexelsAndKeyAreThePlainDefinition) {
   }
   const CardPrints prints = make_card_prints(a, b);
   const Rgb8Image pa = interlace(a, card_layout(5)), pb = interlace(b, card_layout(5));
-  const Texture& print = *prints.print;
+  const Texture print = print_texture(*prints.print);
   ASSERT_EQ(print.width, pa.width);
   ASSERT_EQ(print.height, pa.height * 2);
   std::vector<uint8_t> bytes;
@@ -33,7 +33,7 @@ TEST(CardPrints, TexelsAndKeyAreThePlainDefinition) {
       const uint8_t* p = y < pa.height ? pa.at(x, y) : pb.at(x, y - pa.height);
       bytes.insert(bytes.end(), p, p + 3);
       const float* t = print.at(x, y);
-      const float* s = prints.print_by_strip->at(x / 5, (x % 5) * print.height + y);
+      const glm::vec4 s = prints.print->texel(x, y);
       for (int c = 0; c < 3; ++c) {
         const float want = srgb_to_linear(float(p[c]) / 255.0f) * 0.9f;
         ASSERT_EQ(t[c], want) << "texel " << x << ", " << y << " channel " << c;
@@ -52,8 +52,8 @@ TEST(CardPrints, DoNotDependOnTheThreads) {
   CardPrints a, b;
   with_threads(1, [&] { a = random_prints(one, 4, 31, 17); });
   with_threads(2, [&] { b = random_prints(two, 4, 31, 17); });
-  EXPECT_EQ(a.print->texels, b.print->texels);
-  EXPECT_EQ(a.print_by_strip->texels, b.print_by_strip->texels);
+  EXPECT_EQ(a.print->rgb, b.print->rgb);
+  EXPECT_EQ(print_texture(*a.print).texels, print_texture(*b.print).texels);
   EXPECT_EQ(a.ridges->texels, b.ridges->texels);
   EXPECT_EQ(a.key, b.key);
 }

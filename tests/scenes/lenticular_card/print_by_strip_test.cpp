@@ -1,6 +1,6 @@
-// The CPU reads the card's print strip by strip (textures.h, by_strip): every texel lands where
-// by_strip says, and the card's shading through that copy gives the same bits as through the
-// interlaced print, at every angle, lens, row and scroll.
+// The CPU reads the card's print strip by strip, as bytes (textures.h, StripPrint): every texel
+// lands where the layout says, and the card's shading through the strips gives the same bits as
+// through the plain float print GL reads, at every angle, lens, row and scroll.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -16,22 +16,27 @@ namespace {
 
 TEST(PrintByStrip, EveryTexelMovesToItsStrip) {
   constexpr int VIEWS = 3, LENSES = 5, H = 4;
-  Texture print(LENSES * VIEWS, H, 4);
-  for (size_t i = 0; i < print.texels.size(); ++i) print.texels[i] = float(i);
-  const Texture t = by_strip(print, VIEWS);
-  ASSERT_EQ(t.width, LENSES);
-  ASSERT_EQ(t.height, H * VIEWS);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < LENSES * VIEWS; ++x)
-      for (int c = 0; c < 4; ++c)
-        EXPECT_EQ(t.at(x / VIEWS, (x % VIEWS) * H + y)[c], print.at(x, y)[c]) << x << ", " << y;
+  std::mt19937 rng(2);
+  const CardPrints prints = random_prints(rng, VIEWS, LENSES, H);
+  const StripPrint& p = *prints.print;
+  ASSERT_EQ(p.width, LENSES * VIEWS);
+  ASSERT_EQ(p.height, 2 * H);
+  ASSERT_EQ(p.rgb.size(), size_t(LENSES * VIEWS * 2 * H * 3));
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      // Strip x % VIEWS of lens x / VIEWS: column x / VIEWS, row (x % VIEWS) * height + y.
+      const uint8_t* c = &p.rgb[3 * size_t(((x % VIEWS) * p.height + y) * LENSES + x / VIEWS)];
+      const glm::vec4 t = p.texel(x, y);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(t[k], p.decode[c[k]]) << x << ", " << y;
+    }
 }
 
 TEST(PrintByStrip, CardShadingGivesTheSameBitsAsThroughThePrint) {
   std::mt19937 rng(11);
   const CardPrints prints = random_prints(rng, 7, 9, 5);
-  const CardTextures plain{prints.print.get(), prints.ridges.get()};
-  const CardTextures strips{prints.print.get(), prints.ridges.get(), prints.print_by_strip.get()};
+  const Texture texels = print_texture(*prints.print);
+  const CardTextures plain{nullptr, prints.ridges.get(), &texels};
+  const CardTextures strips{prints.print.get(), prints.ridges.get()};
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int fronts = 0;
   for (double time : {0.0, 3.3, 7.9, 1e6}) {
