@@ -13,16 +13,11 @@ constexpr int SHORTEST_LONG_RUN = 2 + LONG_ZERO_RUN - SHORT_ZERO_RUN;
 constexpr int LONGEST_LONG_RUN = 255 + SHORTEST_LONG_RUN;
 
 // Bits most significant first into a buffer sized beforehand, as OpenEXR's outputBits writes
-// them; a whole 32-bit word at a time.
+// them; a whole 32-bit word at a time. put() takes at most 32 bits, put_long() any count.
 class MsbBits {
  public:
   explicit MsbBits(char* out) : start_(out), out_(out) {}
   void put(int count, uint64_t bits) {
-    if (count > 32) {  // only in theory: codes of a chunk's size stay far below 32 bits
-      put(count - 32, bits >> 32);
-      count = 32;
-      bits &= 0xffffffffu;
-    }
     acc_ = (acc_ << count) | bits;
     pending_ += count;
     if (pending_ >= 32) {
@@ -34,6 +29,14 @@ class MsbBits {
       out_[3] = char(w);
       out_ += 4;
     }
+  }
+  void put_long(int count, uint64_t bits) {
+    if (count > 32) {
+      put(count - 32, bits >> 32);
+      count = 32;
+      bits &= 0xffffffffu;
+    }
+    put(count, bits);
   }
   // Whole bytes out, the last one padded with zeros; returns the bits written.
   size_t finish() {
@@ -51,6 +54,34 @@ class MsbBits {
   uint64_t acc_ = 0;
   int pending_ = 0;
 };
+
+// Runs of one value as hufEncode cuts them, at most 256 values: value | (length - 1) << 16, into
+// `runs` (room for n); each whole run's length added to its value's count (neighbouring runs
+// hold different values, so no count waits on its own last update). Where a value differs from
+// the one before is found sixteen values at a time (the compiler's vector compare). Returns the
+// runs written.
+size_t find_runs(const uint16_t* in, size_t n, uint32_t* runs, uint32_t* counts) {
+  size_t start = 0, written = 0;
+  const auto end_run = [&](size_t end) {
+    const uint16_t v = in[start];
+    size_t length = end - start;
+    counts[v] += uint32_t(length);
+    for (; length > 256; length -= 256) runs[written++] = v | 255u << 16;
+    runs[written++] = v | uint32_t(length - 1) << 16;
+    start = end;
+  };
+  size_t i = 1;
+  for (; i + 16 <= n; i += 16) {
+    uint32_t differ = 0;
+    for (int k = 0; k < 16; ++k)
+      differ |= uint32_t(in[i + size_t(k)] != in[i + size_t(k) - 1]) << k;
+    for (; differ; differ &= differ - 1) end_run(i + size_t(__builtin_ctz(differ)));
+  }
+  for (; i < n; ++i)
+    if (in[i] != in[i - 1]) end_run(i);
+  end_run(n);
+  return written;
+}
 
 // The symbols present (values in increasing order, then the run pseudo-symbol one above the
 // highest): a chunk holds a few thousand of the 65537 possible, so every step below walks these.
@@ -162,32 +193,26 @@ void pack_lengths(const Codes& c, MsbBits& bits) {
   }
 }
 
-// hufEncode: a value repeated `run` more times is the value and the run symbol with an 8-bit
-// count where that is shorter than the repeats. `table[value]`: code << 6 | length.
-void encode(const uint64_t* table, uint64_t rlc, const uint16_t* in, size_t n, MsbBits& bits) {
+// hufEncode over the runs: a value repeated `run` more times is the value and the run symbol
+// with an 8-bit count where that is shorter than the repeats. `table[value]`: code << 6 | length.
+// LONG: some code is over 32 bits (only in theory at a chunk's size).
+template <bool LONG>
+void encode(const uint64_t* table, uint64_t rlc, const uint32_t* runs, size_t count,
+            MsbBits& bits) {
+  const auto put = [&](int n, uint64_t b) { LONG ? bits.put_long(n, b) : bits.put(n, b); };
   const int rlc_len = int(rlc & 63);
-  const auto send = [&](int s, int run) {
-    const int l = int(table[s] & 63);
-    const uint64_t code = table[s] >> 6;
+  for (size_t r = 0; r < count; ++r) {
+    const uint64_t entry = table[runs[r] & 0xffff];
+    const int run = int(runs[r] >> 16), l = int(entry & 63);
+    const uint64_t code = entry >> 6;
     if (l + rlc_len + 8 < l * run) {
-      bits.put(l, code);
-      bits.put(rlc_len, rlc >> 6);
-      bits.put(8, uint64_t(run));
+      put(l, code);
+      put(rlc_len, rlc >> 6);
+      put(8, uint64_t(run));
     } else {
-      for (int k = 0; k <= run; ++k) bits.put(l, code);
+      for (int k = 0; k <= run; ++k) put(l, code);
     }
-  };
-  int s = in[0], run = 0;
-  for (size_t i = 1; i < n; ++i) {
-    if (s == in[i] && run < 255) {
-      ++run;
-    } else {
-      send(s, run);
-      run = 0;
-    }
-    s = in[i];
   }
-  send(s, run);
 }
 
 void put_le32(char* p, uint32_t v) {
@@ -201,22 +226,21 @@ size_t exr_huffman_compress(const uint16_t* raw, size_t n, std::vector<char>& ou
   // Tables of every value, kept per thread and cleared where used: a chunk touches few entries.
   thread_local std::vector<uint32_t> counts(size_t(1) << 16);
   thread_local std::vector<uint64_t> table(size_t(1) << 16);
-  thread_local std::vector<uint32_t> odd_counts(size_t(1) << 16);
-  // Odd positions counted apart: a run of one value (the wavelet's zeros) would otherwise wait on
-  // each increment of its count.
-  size_t i = 0;
-  for (; i + 2 <= n; i += 2) {
-    ++counts[raw[i]];
-    ++odd_counts[raw[i + 1]];
-  }
-  if (i < n) ++counts[raw[i]];
+  thread_local std::vector<uint32_t> runs;
+  if (runs.size() < n) runs.resize(n);
+  const size_t run_count = find_runs(raw, n, runs.data(), counts.data());
   Codes c;
-  for (int v = 0; v < (1 << 16); ++v)
-    if (counts[size_t(v)] | odd_counts[size_t(v)]) {
-      c.symbol.push_back(v);
-      c.freq.push_back(uint64_t(counts[size_t(v)]) + odd_counts[size_t(v)]);
-      counts[size_t(v)] = odd_counts[size_t(v)] = 0;
-    }
+  for (int block = 0; block < (1 << 16); block += 16) {
+    uint32_t any = 0;  // sixteen counts at a time: most are zero
+    for (int k = 0; k < 16; ++k) any |= counts[size_t(block + k)];
+    if (any)
+      for (int v = block; v < block + 16; ++v)
+        if (counts[size_t(v)]) {
+          c.symbol.push_back(v);
+          c.freq.push_back(counts[size_t(v)]);
+          counts[size_t(v)] = 0;
+        }
+  }
   c.symbol.push_back(c.symbol.back() + 1);
   c.freq.push_back(1);
   build_lengths(c);
@@ -239,7 +263,10 @@ size_t exr_huffman_compress(const uint16_t* raw, size_t n, std::vector<char>& ou
   packed.finish();
   const size_t table_bytes = packed.bytes();
   MsbBits data(header + 20 + table_bytes);
-  encode(table.data(), rlc, raw, n, data);
+  if (*std::max_element(c.length.begin(), c.length.end()) > 32)
+    encode<true>(table.data(), rlc, runs.data(), run_count, data);
+  else
+    encode<false>(table.data(), rlc, runs.data(), run_count, data);
   const size_t bits = data.finish();
   put_le32(header, uint32_t(im));
   put_le32(header + 4, uint32_t(iM));

@@ -47,28 +47,36 @@ void trace_pairs(const RayPass& pass, const CpuPassContext& pc, const RoundPairs
   for (int base = first; base < last; base += LANES) {
     const int count = last - base < LANES ? last - base : LANES;
     F8 x, y;
+    int pixel[LANES], sample[LANES];
     for (int i = 0; i < LANES; ++i) {
       const int k = base + (i < count ? i : count - 1);
-      const int pixel = pairs.pixel(k);
-      const glm::vec2& o = f.sample_offsets[size_t(pairs.sample(k))];
-      x[i] = float(pixel % f.width) + o.x;
-      y[i] = float(pixel / f.width) + o.y;
+      pixel[i] = pairs.pixel(k);
+      sample[i] = pairs.sample(k);
+      const glm::vec2& o = f.sample_offsets[size_t(sample[i])];
+      x[i] = float(pixel[i] % f.width) + o.x;
+      y[i] = float(pixel[i] / f.width) + o.y;
     }
     trace_packet(pass, pc, x, y, count, result, stats);
-    for (int i = 0; i < count; ++i) {
-      const int pixel = pairs.pixel(base + i);
-      const glm::vec3 c = result.keep[i] ? result.colour[i] : clear;
-      float* s = &sums.all.pixels[size_t(pixel) * 4];
-      s[0] += c.x;
-      s[1] += c.y;
-      s[2] += c.z;
-      if (sums.evals && result.keep[i]) sums.evals[pixel] += float(result.evals[i]);
-      if ((pairs.sample(base + i) & 1) && !sums.odd.pixels.empty()) {
-        float* o = &sums.odd.pixels[size_t(pixel) * 4];
-        o[0] += c.x;
-        o[1] += c.y;
-        o[2] += c.z;
+    // A pixel's samples are neighbours in the packet: added in list order in registers, each sum
+    // loaded and stored once (added in memory, each addition waited on the store before it).
+    for (int i = 0; i < count;) {
+      const int p = pixel[i];
+      float* s = &sums.all.pixels[size_t(p) * 4];
+      float* o = sums.odd.pixels.empty() ? nullptr : &sums.odd.pixels[size_t(p) * 4];
+      float all[3] = {s[0], s[1], s[2]}, odd[3] = {};
+      if (o) odd[0] = o[0], odd[1] = o[1], odd[2] = o[2];
+      float evals = sums.evals ? sums.evals[p] : 0.0f;
+      for (; i < count && pixel[i] == p; ++i) {
+        const glm::vec3 c = result.keep[i] ? result.colour[i] : clear;
+        all[0] += c.x;
+        all[1] += c.y;
+        all[2] += c.z;
+        if (result.keep[i]) evals += float(result.evals[i]);
+        if ((sample[i] & 1) && o) odd[0] += c.x, odd[1] += c.y, odd[2] += c.z;
       }
+      s[0] = all[0], s[1] = all[1], s[2] = all[2];
+      if (sums.evals) sums.evals[p] = evals;
+      if (o) o[0] = odd[0], o[1] = odd[1], o[2] = odd[2];
     }
   }
 }
