@@ -207,6 +207,16 @@ inline F8 gather(const float* table, M8 i) {
 #endif
 }
 
+inline M8 gather(const int32_t* table, M8 i) {
+#ifdef __AVX2__
+  return reinterpret_cast<M8>(_mm256_i32gather_epi32(table, reinterpret_cast<__m256i>(i), 4));
+#else
+  M8 v;
+  for (int k = 0; k < LANES; ++k) v[k] = table[i[k]];
+  return v;
+#endif
+}
+
 // ---- vectors of lanes ----
 struct V2x8 {
   F8 x, y;

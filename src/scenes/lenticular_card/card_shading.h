@@ -7,6 +7,7 @@
 
 #include "scenes/common/texture.h"
 #include "scenes/lenticular_card/card.h"
+#include "scenes/lenticular_card/card_texels_lanes.h"
 #include "scenes/lenticular_card/textures.h"
 #include "sdf/det_math.h"
 #include "sdf/lanes.h"
@@ -43,7 +44,7 @@ inline glm::vec4 print_texel(const CardTextures& tex, float column, float row) {
 }
 
 // The print's albedo and the sheet's tilted normal (before normalising) at a point of the face:
-// texel reads, one lane at a time.
+// texel reads, one ray's or eight lanes'.
 inline void face_texels(const CardTextures& tex, const CardUniforms& u, float column, float row,
                         float lens_coord, float across, float y, glm::vec3& albedo,
                         glm::vec3& tilt) {
@@ -52,6 +53,12 @@ inline void face_texels(const CardTextures& tex, const CardUniforms& u, float co
 }
 inline void face_texels(const CardTextures& tex, const CardUniforms& u, F8 column, F8 row,
                         F8 lens_coord, F8 across, F8 y, V3x8& albedo, V3x8& tilt) {
+  if (tex.print) {  // the strips: gathers (card_texels_lanes.h)
+    albedo = print_texels(*tex.print, column, row);
+    const V2x8 n = bilinear_xy(*tex.ridges, lens_coord * RIDGE_NOISE_ACROSS, y * RIDGE_NOISE_ALONG);
+    tilt = V3x8(across * RIDGE_SLOPE + n.x * u.ridge_noise, n.y * u.ridge_noise, splat(1.0f));
+    return;
+  }
   for (int i = 0; i < LANES; ++i) {
     glm::vec3 a, n;
     face_texels(tex, u, column[i], row[i], lens_coord[i], across[i], y[i], a, n);

@@ -69,16 +69,12 @@ CardPrints make_card_prints(const std::vector<Rgb8Image>& a, const std::vector<R
       [&] { out.ridges = std::make_shared<Texture>(make_ridge_map(RIDGE_MAP_SIZE, RIDGE_SEED)); },
       [&] {
         StripPrint& p = *print;
-        p.rgb.resize(size_t(p.width) * size_t(p.height) * 3);
-        const size_t strip_width = size_t(p.width / p.views);
+        p.rgbx.resize(size_t(p.width) * size_t(p.height) * 4);
         tbb::parallel_for(0, p.height, [&](int y) {
           const Rgb8Image& src = y < pa.height ? pa : pb;
           const uint8_t* from = src.at(0, y % pa.height);
-          for (int x = 0; x < p.width; ++x, from += 3) {
-            const size_t i = (size_t(x % p.views) * size_t(p.height) + size_t(y)) * strip_width +
-                             size_t(x / p.views);
-            std::copy_n(from, 3, &p.rgb[3 * i]);
-          }
+          for (int x = 0; x < p.width; ++x, from += 3)
+            std::copy_n(from, 3, &p.rgbx[4 * p.index(x, y)]);
         });
       });
   out.print = print;

@@ -52,7 +52,7 @@ TEST(CardPrints, DoNotDependOnTheThreads) {
   CardPrints a, b;
   with_threads(1, [&] { a = random_prints(one, 4, 31, 17); });
   with_threads(2, [&] { b = random_prints(two, 4, 31, 17); });
-  EXPECT_EQ(a.print->rgb, b.print->rgb);
+  EXPECT_EQ(a.print->rgbx, b.print->rgbx);
   EXPECT_EQ(print_texture(*a.print).texels, print_texture(*b.print).texels);
   EXPECT_EQ(a.ridges->texels, b.ridges->texels);
   EXPECT_EQ(a.key, b.key);

@@ -21,11 +21,11 @@ TEST(PrintByStrip, EveryTexelMovesToItsStrip) {
   const StripPrint& p = *prints.print;
   ASSERT_EQ(p.width, LENSES * VIEWS);
   ASSERT_EQ(p.height, 2 * H);
-  ASSERT_EQ(p.rgb.size(), size_t(LENSES * VIEWS * 2 * H * 3));
+  ASSERT_EQ(p.rgbx.size(), size_t(LENSES * VIEWS * 2 * H * 4));
   for (int y = 0; y < p.height; ++y)
     for (int x = 0; x < p.width; ++x) {
       // Strip x % VIEWS of lens x / VIEWS: column x / VIEWS, row (x % VIEWS) * height + y.
-      const uint8_t* c = &p.rgb[3 * size_t(((x % VIEWS) * p.height + y) * LENSES + x / VIEWS)];
+      const uint8_t* c = &p.rgbx[4 * size_t(((x % VIEWS) * p.height + y) * LENSES + x / VIEWS)];
       const glm::vec4 t = p.texel(x, y);
       for (int k = 0; k < 3; ++k) EXPECT_EQ(t[k], p.decode[c[k]]) << x << ", " << y;
     }
