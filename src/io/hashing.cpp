@@ -1,8 +1,9 @@
-// Frame hashes through libavutil (the same MD5 as FFmpeg's framemd5 muxer).
+// Frame hashes: the MD5 of FFmpeg's framemd5 muxer (io/md5.h).
 #include "io/hashing.h"
 
 #include <Imath/half.h>
 
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -10,35 +11,14 @@
 #include <stdexcept>
 #include <vector>
 
-extern "C" {
-#include <libavutil/md5.h>
-#include <libavutil/mem.h>
-}
+#include "io/md5.h"
 
 namespace sdfreel {
 namespace {
 
-struct AvFree {
-  void operator()(void* p) const { av_free(p); }
-};
-
-std::string to_hex(const uint8_t* bytes, size_t n) {
-  static const char kDigits[] = "0123456789abcdef";
-  std::string out(n * 2, '0');
-  for (size_t i = 0; i < n; ++i) {
-    out[2 * i] = kDigits[bytes[i] >> 4];
-    out[2 * i + 1] = kDigits[bytes[i] & 15];
-  }
-  return out;
-}
-
 // Streams 16-bit values into an MD5 as little-endian bytes, whatever the host's byte order.
 class Md5Le16 {
  public:
-  Md5Le16() : ctx_(av_md5_alloc()) {
-    if (!ctx_) throw std::bad_alloc();
-    av_md5_init(ctx_.get());
-  }
   void add(uint16_t v) {
     buf_[len_++] = uint8_t(v & 0xff);
     buf_[len_++] = uint8_t(v >> 8);
@@ -46,17 +26,16 @@ class Md5Le16 {
   }
   std::string hex() {
     flush();
-    uint8_t digest[16];
-    av_md5_final(ctx_.get(), digest);
-    return to_hex(digest, sizeof(digest));
+    const std::array<uint8_t, 16> digest = md5_.finish();
+    return hex_digest(digest.data(), digest.size());
   }
 
  private:
   void flush() {
-    av_md5_update(ctx_.get(), buf_, len_);
+    md5_.update(buf_, len_);
     len_ = 0;
   }
-  std::unique_ptr<AVMD5, AvFree> ctx_;
+  Md5 md5_;
   uint8_t buf_[1 << 16];
   size_t len_ = 0;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Hashes: MD5 of packed rgb48le display pixels (FFmpeg framemd5), a hash of the scene-linear
-// pixels as stored in EXR (half floats). Both from libavutil (SHA-256: timeline/sha256.h).
+// pixels as stored in EXR (half floats). Both io/md5.h's (SHA-256: timeline/sha256.h).
 #include <string>
 
 #include "render/image.h"

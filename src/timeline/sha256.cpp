@@ -1,28 +1,69 @@
 #include "timeline/sha256.h"
 
 #include <cstdint>
-#include <memory>
-#include <new>
-
-extern "C" {
-#include <libavutil/mem.h>
-#include <libavutil/sha.h>
-}
+#include <cstring>
+#include <vector>
 
 namespace sdfreel {
 
+namespace {
+
+constexpr uint32_t K[64] = {
+    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
+    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
+    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
+    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
+    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
+    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+
+uint32_t rotr(uint32_t x, int s) {
+  return (x >> s) | (x << (32 - s));
+}
+
+void compress(uint32_t (&h)[8], const uint8_t* p) {
+  uint32_t w[64];
+  for (int i = 0; i < 16; ++i)
+    w[i] = uint32_t(p[4 * i]) << 24 | uint32_t(p[4 * i + 1]) << 16 | uint32_t(p[4 * i + 2]) << 8 |
+           uint32_t(p[4 * i + 3]);
+  for (int i = 16; i < 64; ++i) {
+    const uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
+    const uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
+    w[i] = w[i - 16] + s0 + w[i - 7] + s1;
+  }
+  uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], k = h[7];
+  for (int i = 0; i < 64; ++i) {
+    const uint32_t t1 =
+        k + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + K[i] + w[i];
+    const uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
+    k = g, g = f, f = e, e = d + t1, d = c, c = b, b = a, a = t1 + t2;
+  }
+  h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e, h[5] += f, h[6] += g, h[7] += k;
+}
+
+}  // namespace
+
+// FIPS 180-4 over the whole string at once (timelines and soundtracks: kilobytes to megabytes).
 std::string sha256_hex(std::string_view bytes) {
-  const std::unique_ptr<AVSHA, void (*)(void*)> sha(av_sha_alloc(), av_free);
-  if (!sha) throw std::bad_alloc();
-  av_sha_init(sha.get(), 256);
-  av_sha_update(sha.get(), reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
-  uint8_t digest[32];
-  av_sha_final(sha.get(), digest);
-  static const char hex[] = "0123456789abcdef";
+  uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                   0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+  const size_t whole = bytes.size() / 64 * 64;
+  for (size_t i = 0; i < whole; i += 64)
+    compress(h, reinterpret_cast<const uint8_t*>(bytes.data()) + i);
+  // The tail, a 1 bit, zeros and the length in bits, big-endian: one or two blocks.
+  std::vector<uint8_t> last(bytes.begin() + std::ptrdiff_t(whole), bytes.end());
+  last.push_back(0x80);
+  while (last.size() % 64 != 56) last.push_back(0);
+  const uint64_t bits = uint64_t(bytes.size()) * 8;
+  for (int i = 7; i >= 0; --i) last.push_back(uint8_t(bits >> (8 * i)));
+  for (size_t i = 0; i < last.size(); i += 64) compress(h, last.data() + i);
+  static const char DIGITS[] = "0123456789abcdef";
   std::string out;
-  for (uint8_t b : digest) {
-    out += hex[b >> 4];
-    out += hex[b & 15];
+  for (int i = 0; i < 32; ++i) {
+    const uint8_t byte = uint8_t(h[i / 4] >> (24 - 8 * (i % 4)));
+    out += DIGITS[byte >> 4];
+    out += DIGITS[byte & 15];
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// SHA-256 of a byte string (libavutil's), for the timeline hash in manifests and the bench's
-// reference cache.
+// SHA-256 of a byte string (FIPS 180-4, written here: sdfreel links no libav library), for the
+// timeline hash in manifests and the bench's reference cache. tests/io/digests_test.cpp holds it
+// to FIPS's vectors and to libavutil's av_sha.
 #include <string>
 #include <string_view>
 
