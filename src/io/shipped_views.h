@@ -3,9 +3,10 @@
 // deterministic math instead of OpenColorIO's CPU processor, whose rounding changes between OCIO
 // releases (2.5 moved 7% of the 16-bit values of a frame by one unit against 2.1 and 2.4). So
 // the display pixels of `config = "builtin"` are a function of the linear pixels and this build
-// alone. OpenColorIO stays the authority: it still reads the config and names its displays and
-// views, it computes every other config's views, and tests/io/shipped_views_test.cpp holds these
-// to its result within a stated tolerance on whatever version is installed.
+// alone. OpenColorIO stays the authority: it names the config's displays and views when a timeline
+// asks for another, it computes every other config's views, and tests/io/shipped_views_test.cpp
+// holds these to its result within a stated tolerance on whatever version is installed (and the
+// shipped file's displays and views to this list).
 #include <cstddef>
 #include <glm/vec3.hpp>
 #include <string>

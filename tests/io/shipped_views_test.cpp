@@ -5,6 +5,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -101,6 +102,16 @@ TEST(ShippedViews, OnlyTheShippedDisplayAndViewsHaveOwnMath) {
   EXPECT_NE(shipped_view("sRGB", kRaw), nullptr);
   EXPECT_EQ(shipped_view("sRGB", "Filmic"), nullptr);
   EXPECT_EQ(shipped_view("P3", kAces), nullptr);
+}
+
+// A render of the shipped views does not parse the config (io/color.cpp): every view with its own
+// math must be one the shipped file names.
+TEST(ShippedViews, EveryViewWithOwnMathIsOneTheShippedConfigNames) {
+  const std::vector<std::string> displays = ocio_displays("builtin");
+  ASSERT_NE(std::find(displays.begin(), displays.end(), "sRGB"), displays.end());
+  const std::vector<std::string> views = ocio_views("builtin", "sRGB");
+  for (const char* view : {kAces, kRaw})
+    EXPECT_NE(std::find(views.begin(), views.end(), view), views.end()) << view;
 }
 
 // The CTL's anchor points: 18% grey maps to 4.8 nits of 48 through the RRT and the ODT, the
