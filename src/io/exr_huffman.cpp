@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "io/little_endian.h"
+
 namespace sdfreel {
 
 namespace {
@@ -215,10 +217,6 @@ void encode(const uint64_t* table, uint64_t rlc, const uint32_t* runs, size_t co
   }
 }
 
-void put_le32(char* p, uint32_t v) {
-  for (int i = 0; i < 4; ++i) p[i] = char(v >> (8 * i));
-}
-
 }  // namespace
 
 size_t exr_huffman_compress(const uint16_t* raw, size_t n, std::vector<char>& out) {
@@ -268,11 +266,11 @@ size_t exr_huffman_compress(const uint16_t* raw, size_t n, std::vector<char>& ou
   else
     encode<false>(table.data(), rlc, runs.data(), run_count, data);
   const size_t bits = data.finish();
-  put_le32(header, uint32_t(im));
-  put_le32(header + 4, uint32_t(iM));
-  put_le32(header + 8, uint32_t(table_bytes));
-  put_le32(header + 12, uint32_t(bits));
-  put_le32(header + 16, 0);
+  store_le(header, uint32_t(im), 4);
+  store_le(header + 4, uint32_t(iM), 4);
+  store_le(header + 8, uint32_t(table_bytes), 4);
+  store_le(header + 12, uint32_t(bits), 4);
+  store_le(header + 16, 0, 4);
   const size_t written = 20 + table_bytes + (bits + 7) / 8;
   out.resize(start + written);
   return written;

@@ -2,16 +2,13 @@
 
 #include "io/exr_huffman.h"
 #include "io/exr_wavelet.h"
+#include "io/little_endian.h"
 
 namespace sdfreel {
 
 namespace {
 
 constexpr int BITMAP_BYTES = (1 << 16) / 8;
-
-void put_le(std::vector<char>& out, uint32_t v, int bytes) {
-  for (int i = 0; i < bytes; ++i) out.push_back(char(v >> (8 * i)));
-}
 
 }  // namespace
 
@@ -47,8 +44,8 @@ std::vector<char> piz_compress(std::vector<uint16_t>& values,
 
   std::vector<char> out;
   out.reserve(values.size() + BITMAP_BYTES);
-  put_le(out, uint32_t(first), 2);
-  put_le(out, uint32_t(last), 2);
+  append_le(out, uint32_t(first), 2);
+  append_le(out, uint32_t(last), 2);
   if (first <= last) out.insert(out.end(), bitmap.begin() + first, bitmap.begin() + last + 1);
 
   uint16_t* channel = values.data();
@@ -59,9 +56,9 @@ std::vector<char> piz_compress(std::vector<uint16_t>& values,
   }
 
   const size_t length_at = out.size();
-  put_le(out, 0, 4);
+  append_le(out, 0, 4);
   const size_t length = exr_huffman_compress(values.data(), values.size(), out);
-  for (int i = 0; i < 4; ++i) out[length_at + size_t(i)] = char(length >> (8 * i));
+  store_le(&out[length_at], length, 4);
   return out;
 }
 

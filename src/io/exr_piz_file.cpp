@@ -12,6 +12,7 @@
 
 #include "io/exr_memory_stream.h"
 #include "io/exr_piz.h"
+#include "io/little_endian.h"
 
 namespace sdfreel {
 
@@ -98,10 +99,6 @@ std::vector<char> code_chunk(const std::vector<ChannelSource>& sources, int min_
   return std::vector<char>(raw, raw + words * sizeof(uint16_t));
 }
 
-void put_le(std::vector<char>& out, uint64_t v, int bytes) {
-  for (int i = 0; i < bytes; ++i) out.push_back(char(v >> (8 * i)));
-}
-
 }  // namespace
 
 std::vector<char> encode_piz_exr(const Imf::Header& header, const Imf::FrameBuffer& frame) {
@@ -126,9 +123,9 @@ std::vector<char> encode_piz_exr(const Imf::Header& header, const Imf::FrameBuff
   file.reserve(total);
   for (int k = 0; k < chunks; ++k) {
     const uint64_t at = file.size();
-    for (int i = 0; i < 8; ++i) file[table + size_t(k) * 8 + size_t(i)] = char(at >> (8 * i));
-    put_le(file, uint32_t(dw.min.y + k * PIZ_LINES), 4);
-    put_le(file, coded[size_t(k)].size(), 4);
+    store_le(&file[table + size_t(k) * 8], at, 8);
+    append_le(file, uint32_t(dw.min.y + k * PIZ_LINES), 4);
+    append_le(file, coded[size_t(k)].size(), 4);
     file.insert(file.end(), coded[size_t(k)].begin(), coded[size_t(k)].end());
   }
   return file;

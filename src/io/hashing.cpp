@@ -4,14 +4,10 @@
 #include <Imath/half.h>
 
 #include <array>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <memory>
-#include <stdexcept>
-#include <vector>
 
 #include "io/md5.h"
+#include "render/hex_digest.h"
 
 namespace sdfreel {
 namespace {

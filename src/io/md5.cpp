@@ -91,14 +91,4 @@ std::array<uint8_t, 16> Md5::finish() {
   return digest;
 }
 
-std::string hex_digest(const uint8_t* bytes, size_t n) {
-  static const char DIGITS[] = "0123456789abcdef";
-  std::string out(n * 2, '0');
-  for (size_t i = 0; i < n; ++i) {
-    out[2 * i] = DIGITS[bytes[i] >> 4];
-    out[2 * i + 1] = DIGITS[bytes[i] & 15];
-  }
-  return out;
-}
-
 }  // namespace sdfreel

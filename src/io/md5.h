@@ -5,7 +5,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <string>
 
 namespace sdfreel {
 
@@ -21,8 +20,5 @@ class Md5 {
   uint8_t buffer_[64] = {};
   size_t buffered_ = 0;
 };
-
-// Lowercase hex of bytes, two characters a byte.
-std::string hex_digest(const uint8_t* bytes, size_t n);
 
 }  // namespace sdfreel

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <vector>
 
+#include "render/hex_digest.h"
+
 namespace sdfreel {
 
 namespace {
@@ -58,14 +60,9 @@ std::string sha256_hex(std::string_view bytes) {
   const uint64_t bits = uint64_t(bytes.size()) * 8;
   for (int i = 7; i >= 0; --i) last.push_back(uint8_t(bits >> (8 * i)));
   for (size_t i = 0; i < last.size(); i += 64) compress(h, last.data() + i);
-  static const char DIGITS[] = "0123456789abcdef";
-  std::string out;
-  for (int i = 0; i < 32; ++i) {
-    const uint8_t byte = uint8_t(h[i / 4] >> (24 - 8 * (i % 4)));
-    out += DIGITS[byte >> 4];
-    out += DIGITS[byte & 15];
-  }
-  return out;
+  uint8_t digest[32];
+  for (int i = 0; i < 32; ++i) digest[i] = uint8_t(h[i / 4] >> (24 - 8 * (i % 4)));
+  return hex_digest(digest, sizeof digest);
 }
 
 }  // namespace sdfreel

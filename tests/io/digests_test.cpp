@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/md5.h"
+#include "render/hex_digest.h"
 #include "timeline/sha256.h"
 
 extern "C" {
